@@ -1,0 +1,116 @@
+// veridem: the command-line program.
+//   veridem run SCENE [--out DIR]      run a scene file (DEM 3D or FEM/DEM 2D)
+//   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR]
+#include "app/run_scene.h"
+#include "core/error.h"
+#include "io/toml_reader.h"
+#include "runner.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#ifdef VERIDEM_HAVE_FDEM
+#include "fdem/scene_runner.h"
+#endif
+
+namespace
+{
+
+int runCommand(const veridem::app::RunOptions& options)
+{
+    const toml::table scene = veridem::io::parseFile(options.sceneFile);
+    std::string type = "dem";
+    if (const auto* simulation = scene["simulation"].as_table())
+        if (const auto t = (*simulation)["type"].value<std::string>())
+            type = *t;
+    if (type == "dem")
+        return veridem::app::runDemScene(scene, options);
+#ifdef VERIDEM_HAVE_FDEM
+    if (type == "fdem2d")
+        return veridem::fdem::runScene(scene, options.sceneFile, options.outDir, options.progress,
+                                       options.allowUnstableTimeStep);
+#endif
+    throw veridem::InputError(options.sceneFile + ": [simulation] 'type' must be \"dem\" or \"fdem2d\" (got \"" +
+                              type + "\")");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"veridem: verified DEM and FEM/DEM contact physics (SI units throughout)"};
+    app.require_subcommand(1);
+
+    veridem::app::RunOptions runOptions;
+    std::string outDir = "out";
+    bool quiet = false;
+    auto* run = app.add_subcommand("run", "Run a scene file; writes particles.csv and ParaView files to --out");
+    run->add_option("scene", runOptions.sceneFile, "TOML scene file (see docs/scene-format.md)")->required();
+    run->add_option("--out", outDir, "output directory")->capture_default_str();
+    run->add_flag("--quiet", quiet, "no progress output");
+    run->add_flag("--force-dt", runOptions.allowUnstableTimeStep,
+                  "run even if dt exceeds the stability limit (a warning is printed)");
+
+    veridem::verify::RunRequest verifyRequest;
+    bool list = false;
+    std::string jsonPath, reportDir;
+    auto* verify = app.add_subcommand("verify", "Run verification cases against their analytical solutions");
+    verify->add_flag("--list", list, "list the cases and exit");
+    verify->add_option("--case", verifyRequest.names, "run only this case (repeatable)");
+    verify->add_option("--label", verifyRequest.labels, "run cases with this label, e.g. quick, paper (repeatable)");
+    verify->add_option("--json", jsonPath, "also write the results as JSON");
+    verify->add_option("--report", reportDir, "write an HTML report with figures to this directory");
+    verify->add_flag("--quiet", quiet, "no progress output");
+
+    CLI11_PARSE(app, argc, argv);
+
+    try
+    {
+        if (run->parsed())
+        {
+            runOptions.outDir = outDir;
+            runOptions.progress = !quiet;
+            return runCommand(runOptions);
+        }
+        if (list)
+        {
+            veridem::verify::listCases();
+            return 0;
+        }
+        verifyRequest.showProgress = !quiet;
+        if (!jsonPath.empty())
+            verifyRequest.jsonPath = jsonPath;
+        if (!reportDir.empty())
+        {
+            verifyRequest.seriesDir = reportDir + "/data";
+            if (jsonPath.empty())
+                verifyRequest.jsonPath = reportDir + "/data/results.json";
+        }
+        const int code = veridem::verify::runCases(verifyRequest);
+        if (!reportDir.empty())
+        {
+            const std::string command = "/usr/bin/python3 \"" VERIDEM_SOURCE_DIR "/scripts/report.py\" \"" +
+                                        reportDir + "\" \"" + *verifyRequest.jsonPath + "\"";
+            if (std::system(command.c_str()) != 0)
+            {
+                std::fprintf(stderr, "veridem: the report could not be drawn (command: %s)\n", command.c_str());
+                return code ? code : 1;
+            }
+        }
+        return code;
+    }
+    catch (const veridem::InputError& e)
+    {
+        std::fprintf(stderr, "veridem: error: %s\n", e.what());
+        return 2;
+    }
+    catch (const veridem::SimulationError& e)
+    {
+        std::fprintf(stderr, "veridem: simulation stopped: %s\n", e.what());
+        return 3;
+    }
+}

@@ -1,0 +1,23 @@
+// Scene runners called by `veridem run`. The scene's [simulation] type picks one.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <string>
+
+namespace veridem::app
+{
+
+struct RunOptions
+{
+    std::string sceneFile;
+    std::filesystem::path outDir;  // created if missing
+    bool progress = true;          // progress with ETA on stderr
+    bool allowUnstableTimeStep = false;  // --force-dt: run above the stability limit (warned)
+};
+
+/// 3D sphere DEM scene (type = "dem"). Returns the exit code.
+int runDemScene(const toml::table& scene, const RunOptions& options);
+
+} // namespace veridem::app

@@ -1,0 +1,73 @@
+// Strict reading of TOML scene tables: every key that is read is recorded, and finish() rejects
+// any key that was not, naming the file, the line and the nearest valid key. Errors are thrown as
+// veridem::InputError with a one-line message.
+#pragma once
+
+#include "core/vec3.h"
+
+#include <toml++/toml.h>
+
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace veridem::io
+{
+
+class TableReader
+{
+  public:
+    /// `where` names the table in messages, e.g. "[[sphere]] #2"; `file` is the scene path.
+    TableReader(const toml::table& table, std::string where, std::string file);
+
+    bool has(std::string_view key) const;
+
+    Real number(std::string_view key, Real defaultValue);
+    Real requiredNumber(std::string_view key);
+    std::optional<Real> optionalNumber(std::string_view key);
+    std::int64_t integer(std::string_view key, std::int64_t defaultValue);
+    bool boolean(std::string_view key, bool defaultValue);
+    std::string string(std::string_view key, std::string_view defaultValue);
+    std::string requiredString(std::string_view key);
+    /// A string that must be one of `choices`.
+    std::string choice(std::string_view key, std::string_view defaultValue,
+                       const std::vector<std::string>& choices);
+    Vec3 vec3(std::string_view key, Vec3 defaultValue);
+    Vec3 requiredVec3(std::string_view key);
+    std::optional<Vec3> optionalVec3(std::string_view key);
+
+    std::optional<TableReader> table(std::string_view key);
+    std::vector<TableReader> arrayOfTables(std::string_view key);
+
+    /// Throws on the first key that no accessor asked for.
+    void finish() const;
+
+    /// Throws an InputError located at `key` (or at the table if the key is absent).
+    [[noreturn]] void fail(std::string_view key, std::string_view message) const;
+
+    /// Throws unless value > 0 (names key, value and unit).
+    void requirePositive(std::string_view key, Real value, std::string_view unit) const;
+    void requireNonNegative(std::string_view key, Real value, std::string_view unit) const;
+
+    const std::string& file() const { return file_; }
+    const std::string& where() const { return where_; }
+
+  private:
+    std::string location(const toml::node* node) const;
+    const toml::node* node(std::string_view key);
+
+    const toml::table* table_;
+    std::string where_;
+    std::string file_;
+    std::set<std::string, std::less<>> used_;
+};
+
+/// Parses a TOML file; a syntax error becomes an InputError with file:line:column.
+toml::table parseFile(const std::string& path);
+
+/// Edit distance used to suggest the nearest valid key.
+std::size_t editDistance(std::string_view a, std::string_view b);
+
+} // namespace veridem::io

@@ -1,0 +1,83 @@
+// A verification case: a scene, the observables it measures, and the analytical expectation
+// computed from a formula in the case's own file. Every quantity carries a two-sided tolerance
+// and the reason for it. Cases register themselves with VERIDEM_CASE so that adding a case is
+// adding one file (see docs/architecture.md).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace veridem::verify
+{
+
+/// One compared number. The check is |measured - expected| <= tolerance * (relative ? |expected| : 1).
+struct Quantity
+{
+    std::string name;      // e.g. "v_final"
+    std::string unit;      // e.g. "m/s" ("" for dimensionless)
+    double expected = 0;   // from the formula
+    double measured = 0;   // from the simulation
+    double tolerance = 0;  // relative (fraction) or absolute (in `unit`)
+    bool relative = true;  // how `tolerance` is read
+    std::string why;       // where the tolerance comes from
+
+    double error() const;  // relative error if `relative`, else absolute error
+    bool passed() const;
+};
+
+/// A time series a case writes for the report (CSV with a header line).
+struct Series
+{
+    std::string name;                   // file stem, e.g. "t1b_trajectory"
+    std::vector<std::string> columns;   // header
+    std::vector<std::vector<double>> rows;
+};
+
+struct CaseResult
+{
+    std::vector<Quantity> quantities;
+    std::vector<std::string> notes;  // free-text findings printed under the table
+    std::vector<Series> series;      // written to <out>/<case>/<series>.csv when an output dir is set
+    double wallSeconds = 0;          // filled by the runner
+    bool passed() const;
+};
+
+struct CaseContext
+{
+    bool showProgress = false;  // long cases print progress on stderr
+};
+
+struct Case
+{
+    std::string name;       // unique, snake_case
+    std::string summary;    // one line
+    std::string reference;  // where the formula comes from
+    std::vector<std::string> labels;  // "quick" (CI), "paper", "dem", "fdem", "slow" ...
+    std::function<CaseResult(const CaseContext&)> run;
+};
+
+/// All registered cases, sorted by name.
+std::vector<Case>& registry();
+
+struct Registrar
+{
+    explicit Registrar(Case c);
+};
+
+/// Relative-tolerance quantity helper.
+Quantity relativeQuantity(std::string name, std::string unit, double expected, double measured,
+                          double tolerance, std::string why);
+/// Absolute-tolerance quantity helper.
+Quantity absoluteQuantity(std::string name, std::string unit, double expected, double measured,
+                          double tolerance, std::string why);
+
+} // namespace veridem::verify
+
+#define VERIDEM_CONCAT_INNER(a, b) a##b
+#define VERIDEM_CONCAT(a, b) VERIDEM_CONCAT_INNER(a, b)
+/// Registers a case at static-initialisation time: VERIDEM_CASE({.name = ..., .run = ...});
+#define VERIDEM_CASE(...)                                                                                   \
+    static const ::veridem::verify::Registrar VERIDEM_CONCAT(veridemCaseRegistrar_, __LINE__)(            \
+        ::veridem::verify::Case __VA_ARGS__)

@@ -1,0 +1,201 @@
+#include "runner.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace veridem::verify
+{
+
+namespace
+{
+
+std::string jsonEscape(const std::string& s)
+{
+    std::string out;
+    for (char c : s)
+    {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (c == '\n')
+        {
+            out += "\\n";
+            continue;
+        }
+        out += c;
+    }
+    return out;
+}
+
+std::string jsonNumber(double v)
+{
+    if (!std::isfinite(v))
+        return "null";
+    std::ostringstream s;
+    s << std::setprecision(17) << v;
+    return s.str();
+}
+
+bool selected(const Case& c, const RunRequest& r)
+{
+    if (!r.names.empty())
+        return std::find(r.names.begin(), r.names.end(), c.name) != r.names.end();
+    if (r.labels.empty())
+        return true;
+    for (const auto& l : r.labels)
+        if (std::find(c.labels.begin(), c.labels.end(), l) != c.labels.end())
+            return true;
+    return false;
+}
+
+void writeSeries(const std::filesystem::path& dir, const Series& s)
+{
+    std::filesystem::create_directories(dir);
+    std::ofstream out(dir / (s.name + ".csv"));
+    for (std::size_t i = 0; i < s.columns.size(); ++i)
+        out << (i ? "," : "") << s.columns[i];
+    out << "\n" << std::setprecision(12);
+    for (const auto& row : s.rows)
+    {
+        for (std::size_t i = 0; i < row.size(); ++i)
+            out << (i ? "," : "") << row[i];
+        out << "\n";
+    }
+}
+
+void printRow(const std::string& caseName, const Quantity& q)
+{
+    std::printf("%-30s %-26s %14.7g %14.7g %10.3e %10.3e%s %s\n", caseName.c_str(),
+                (q.name + (q.unit.empty() ? "" : " [" + q.unit + "]")).c_str(), q.expected, q.measured,
+                q.error(), q.tolerance, q.relative ? "r" : "a", q.passed() ? "PASS" : "FAIL");
+}
+
+} // namespace
+
+void listCases()
+{
+    for (const auto& c : registry())
+    {
+        std::string labels;
+        for (const auto& l : c.labels)
+            labels += (labels.empty() ? "" : ",") + l;
+        std::printf("%-32s %-22s %s\n", c.name.c_str(), labels.c_str(), c.summary.c_str());
+    }
+}
+
+int runCases(const RunRequest& request)
+{
+    for (const auto& n : request.names)
+    {
+        const auto& cases = registry();
+        if (std::none_of(cases.begin(), cases.end(), [&](const Case& c) { return c.name == n; }))
+        {
+            std::string nearest;
+            for (const auto& c : cases)
+                if (c.name.find(n) != std::string::npos || n.find(c.name) != std::string::npos)
+                    nearest = c.name;
+            throw InputError("unknown verification case '" + n + "'" +
+                             (nearest.empty() ? "" : " (did you mean '" + nearest + "'?)") +
+                             "; `veridem verify --list` shows them all");
+        }
+    }
+
+    struct Outcome
+    {
+        const Case* c;
+        CaseResult result;
+        std::string error;
+    };
+    std::vector<Outcome> outcomes;
+    CaseContext context{.showProgress = request.showProgress};
+
+    std::printf("%-30s %-26s %14s %14s %10s %11s %s\n", "case", "quantity", "theory", "measured", "error",
+                "tolerance", "result");
+    std::printf("%s\n", std::string(118, '-').c_str());
+    std::fflush(stdout);
+    for (const auto& c : registry())
+    {
+        if (!selected(c, request))
+            continue;
+        Outcome o{&c, {}, {}};
+        const auto start = std::chrono::steady_clock::now();
+        try
+        {
+            o.result = c.run(context);
+        }
+        catch (const std::exception& e)
+        {
+            o.error = e.what();
+        }
+        o.result.wallSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        for (const auto& q : o.result.quantities)
+            printRow(c.name, q);
+        if (!o.error.empty())
+            std::printf("%-30s ERROR: %s\n", c.name.c_str(), o.error.c_str());
+        else if (o.result.quantities.empty())
+            std::printf("%-30s ERROR: the case measured nothing\n", c.name.c_str());
+        for (const auto& note : o.result.notes)
+            std::printf("%-30s   note: %s\n", "", note.c_str());
+        std::printf("%-30s   (%.2f s)\n", "", o.result.wallSeconds);
+        std::fflush(stdout);
+        if (request.seriesDir)
+            for (const auto& s : o.result.series)
+                writeSeries(std::filesystem::path(*request.seriesDir) / c.name, s);
+        outcomes.push_back(std::move(o));
+    }
+
+    int failed = 0;
+    for (const auto& o : outcomes)
+        failed += (!o.error.empty() || !o.result.passed()) ? 1 : 0;
+    std::printf("%s\n", std::string(118, '-').c_str());
+    std::printf("%zu cases: %zu passed, %d failed\n", outcomes.size(), outcomes.size() - failed, failed);
+
+    if (request.jsonPath)
+    {
+        const std::filesystem::path jsonPath(*request.jsonPath);
+        if (jsonPath.has_parent_path())
+            std::filesystem::create_directories(jsonPath.parent_path());
+        std::ofstream out(jsonPath);
+        if (!out)
+            throw InputError("cannot write JSON to '" + *request.jsonPath + "'");
+        out << "{\"cases\":[";
+        for (std::size_t k = 0; k < outcomes.size(); ++k)
+        {
+            const auto& o = outcomes[k];
+            out << (k ? "," : "") << "\n{\"name\":\"" << jsonEscape(o.c->name) << "\",\"summary\":\""
+                << jsonEscape(o.c->summary) << "\",\"reference\":\"" << jsonEscape(o.c->reference)
+                << "\",\"passed\":" << ((o.error.empty() && o.result.passed()) ? "true" : "false")
+                << ",\"seconds\":" << jsonNumber(o.result.wallSeconds);
+            if (!o.error.empty())
+                out << ",\"error\":\"" << jsonEscape(o.error) << "\"";
+            out << ",\"notes\":[";
+            for (std::size_t n = 0; n < o.result.notes.size(); ++n)
+                out << (n ? "," : "") << "\"" << jsonEscape(o.result.notes[n]) << "\"";
+            out << "],\"quantities\":[";
+            for (std::size_t q = 0; q < o.result.quantities.size(); ++q)
+            {
+                const auto& v = o.result.quantities[q];
+                out << (q ? "," : "") << "{\"name\":\"" << jsonEscape(v.name) << "\",\"unit\":\""
+                    << jsonEscape(v.unit) << "\",\"expected\":" << jsonNumber(v.expected)
+                    << ",\"measured\":" << jsonNumber(v.measured) << ",\"tolerance\":" << jsonNumber(v.tolerance)
+                    << ",\"relative\":" << (v.relative ? "true" : "false") << ",\"error\":" << jsonNumber(v.error())
+                    << ",\"passed\":" << (v.passed() ? "true" : "false") << ",\"why\":\"" << jsonEscape(v.why)
+                    << "\"}";
+            }
+            out << "]}";
+        }
+        out << "\n]}\n";
+    }
+    return failed == 0 ? 0 : 1;
+}
+
+} // namespace veridem::verify
