@@ -1,0 +1,58 @@
+// Velocity-Verlet integration of translation and rotation (spheres: isotropic inertia, so the
+// angular velocity needs no orientation). a = F/m + g, dw/dt = T/I.
+#pragma once
+
+#include "dem/particles.h"
+#include "dem/walls/wall.h"
+#include "dem/world.h"
+
+#include <cmath>
+#include <vector>
+
+namespace veridem::dem
+{
+
+/// v += dt/2 a; w += dt/2 alpha; x += dt v.
+inline void kickDrift(ParticleStore& p, const Vec3& gravity, Real dt)
+{
+    const Real half = 0.5 * dt;
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+        p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+        p.position[i] += dt * p.velocity[i];
+    }
+}
+
+/// v += dt/2 a; w += dt/2 alpha; records the first non-finite particle in `health`.
+inline void kick(ParticleStore& p, const Vec3& gravity, Real dt, StepHealth& health)
+{
+    const Real half = 0.5 * dt;
+    const std::size_t n = p.size();
+    bool finite = true;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+        p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+        finite = finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) && isFinite(p.angularVelocity[i]);
+    }
+    health.finite = finite;
+    if (!finite)
+        for (std::size_t i = 0; i < n; ++i)
+            if (!isFinite(p.position[i]) || !isFinite(p.velocity[i]) || !isFinite(p.angularVelocity[i]))
+            {
+                health.firstNonFinite = static_cast<std::uint32_t>(i);
+                break;
+            }
+}
+
+/// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry
+/// unchanged; only translation moves it).
+inline void moveWalls(std::vector<Wall>& walls, Real dt)
+{
+    for (Wall& w : walls)
+        w.displacement += dt * w.motion.velocity;
+}
+
+} // namespace veridem::dem

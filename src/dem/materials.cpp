@@ -1,0 +1,95 @@
+#include "dem/materials.h"
+
+#include "core/error.h"
+#include "dem/models/normal.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace veridem::dem
+{
+
+namespace
+{
+Real seriesStiffness(Real a, Real b) { return (a + b) > 0 ? 2.0 * a * b / (a + b) : 0.0; }
+
+[[noreturn]] void bad(const Material& m, const std::string& what)
+{
+    throw InputError("material '" + m.name + "': " + what);
+}
+} // namespace
+
+void validateMaterial(const Material& m)
+{
+    std::ostringstream s;
+    if (!(m.density > 0))
+        bad(m, "density must be > 0 kg/m^3");
+    if (!(m.restitution > 0 && m.restitution <= 1))
+        bad(m, "restitution e must be in (0, 1]");
+    if (!(m.friction >= 0))
+        bad(m, "friction mu must be >= 0");
+    if (!(m.rollingFrictionLength >= 0) || !(m.rollingFrictionDimensionless >= 0))
+        bad(m, "rolling friction must be >= 0");
+    if (m.rollingFrictionLength > 0 && m.rollingFrictionDimensionless > 0)
+        bad(m, "give rolling friction either as a length (m) or dimensionless, not both");
+    if (m.normalModel == NormalModel::Linear)
+    {
+        if (!(m.normalStiffness > 0))
+            bad(m, "normal stiffness kn must be > 0 N/m");
+        if (!(m.tangentialStiffnessRatio >= 0))
+            bad(m, "kt/kn must be >= 0");
+    }
+    else
+    {
+        if (!(m.youngsModulus > 0))
+            bad(m, "Young's modulus must be > 0 Pa for the Hertz model");
+        if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
+            bad(m, "Poisson's ratio must be in (-1, 0.5)");
+    }
+}
+
+PairParams mixMaterials(const Material& a, const Material& b)
+{
+    PairParams p;
+    if (a.normalModel != b.normalModel)
+        throw InputError("materials '" + a.name + "' and '" + b.name +
+                         "' use different normal models; give them the same model");
+    p.normalModel = a.normalModel;
+    p.kn = seriesStiffness(a.normalStiffness, b.normalStiffness);
+    p.ktRatio = 0.5 * (a.tangentialStiffnessRatio + b.tangentialStiffnessRatio);
+    if (p.normalModel == NormalModel::Hertz)
+    {
+        p.effectiveModulus = 1.0 / ((1 - a.poissonRatio * a.poissonRatio) / a.youngsModulus +
+                                    (1 - b.poissonRatio * b.poissonRatio) / b.youngsModulus);
+        const Real ga = a.youngsModulus / (2 * (1 + a.poissonRatio));
+        const Real gb = b.youngsModulus / (2 * (1 + b.poissonRatio));
+        p.effectiveShearModulus = 1.0 / ((2 - a.poissonRatio) / ga + (2 - b.poissonRatio) / gb);
+    }
+    const Real e = 0.5 * (a.restitution + b.restitution);
+    p.dampingRatio = dampingRatioFromRestitution(e);
+    p.hertzBeta = p.dampingRatio;  // beta = -ln e / sqrt(ln^2 e + pi^2): the same expression
+    if (a.normalDampingRate >= 0 || b.normalDampingRate >= 0)
+        p.dampingRate = 0.5 * (std::fmax(a.normalDampingRate, 0) + std::fmax(b.normalDampingRate, 0));
+    const Real ratioA = a.tangentialDampingRatio, ratioB = b.tangentialDampingRatio;
+    if (ratioA >= 0 && ratioB >= 0)
+        p.tangentialDampingRatio = 0.5 * (ratioA + ratioB);
+    else
+        p.tangentialDampingRatio = std::sqrt((2.0 / 7.0) * p.ktRatio);
+    p.mu = 0.5 * (a.friction + b.friction);
+    p.rollingModel = a.rollingModel != RollingModel::None ? a.rollingModel : b.rollingModel;
+    p.rollingLength = 0.5 * (a.rollingFrictionLength + b.rollingFrictionLength);
+    p.rollingDimensionless = 0.5 * (a.rollingFrictionDimensionless + b.rollingFrictionDimensionless);
+    p.rollingDampingRatio = 0.5 * (a.rollingDampingRatio + b.rollingDampingRatio);
+    return p;
+}
+
+void PairTable::build(const std::vector<Material>& materials)
+{
+    count_ = static_cast<std::uint32_t>(materials.size());
+    table_.assign(static_cast<std::size_t>(count_) * count_, PairParams{});
+    for (std::uint32_t a = 0; a < count_; ++a)
+        for (std::uint32_t b = 0; b < count_; ++b)
+            table_[a * count_ + b] = mixMaterials(materials[a], materials[b]);
+}
+
+} // namespace veridem::dem

@@ -1,0 +1,59 @@
+// Rolling resistance torques (pure functions). Both oppose the angular velocity of the particle
+// RELATIVE TO ITS CONTACT PARTNER, w_rel = w_i - w_partner (for a wall: the wall's own angular
+// velocity), twisting part included, so that the torque is objective on rotating and curved walls
+// (BENCHMARKS 1b, 1c: without the twisting part the dish test locks at a wrong height).
+//
+// Type A, constant directional torque (Beer & Johnson 1976; Zhou et al. 1999; the paper's eq. 3):
+//     M = -muR Fn w_rel / |w_rel|,    muR a length [m] (= muR' * R_r with R_r = R1 R2/(R1+R2)).
+//   Rest treatment: |M| is limited to I_r |w_rel| / dt, the torque that would stop the relative
+//   rotation within one step, so it does not chatter (+-muR Fn each step) at rest
+//   (BENCHMARKS 2.3 fix (a)). This only acts when |w_rel| < muR Fn dt / I_r.
+//
+// Type C, elastic-plastic spring-dashpot "EPSD" (Ai, Chen, Rotter & Ooi 2011):
+//     dMk = -kr w_rel dt, |Mk| <= muR Fn,  kr = 2.25 kn muR^2   (kn muR'^2 R_r^2 form),
+//     Md  = -Cr w_rel while |Mk| < muR Fn (zero once fully mobilised), Cr = etaR 2 sqrt(I_r kr).
+//   It holds a ball at rest on an incline with tan(theta) <= muR'.
+#pragma once
+
+#include "core/vec3.h"
+
+#include <cmath>
+
+namespace veridem::dem
+{
+
+/// Type A torque on the particle [N m]. muR [m], Fn [N] (clipped >= 0), wRel [rad/s],
+/// rollingInertia I_r [kg m^2] (reduced moment of inertia of the pair), dt [s].
+inline Vec3 constantRollingTorque(Real muR, Real normalForce, const Vec3& relativeAngularVelocity,
+                                  Real rollingInertia, Real dt)
+{
+    const Real w = length(relativeAngularVelocity);
+    if (w == 0 || muR == 0 || normalForce <= 0)
+        return Vec3{};
+    const Real magnitude = std::fmin(muR * normalForce, rollingInertia * w / dt);
+    return relativeAngularVelocity * (-magnitude / w);
+}
+
+struct RollingSpringResult
+{
+    Vec3 torque;  // on the particle [N m]
+    Vec3 spring;  // updated elastic torque Mk [N m]
+    bool fullyMobilised = false;
+};
+
+/// Type C (EPSD) torque. kr [N m/rad], cr [N m s/rad], muR [m], Fn [N], spring Mk [N m].
+inline RollingSpringResult epsdRollingTorque(Real kr, Real cr, Real muR, Real normalForce, Vec3 spring,
+                                             const Vec3& relativeAngularVelocity, Real dt)
+{
+    spring -= kr * dt * relativeAngularVelocity;
+    const Real cap = muR * std::fmax(normalForce, 0.0);
+    const Real springLength = length(spring);
+    if (springLength > cap)
+    {
+        spring = springLength > 0 ? spring * (cap / springLength) : Vec3{};
+        return {spring, spring, true};
+    }
+    return {spring - cr * relativeAngularVelocity, spring, false};
+}
+
+} // namespace veridem::dem

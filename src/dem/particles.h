@@ -1,0 +1,57 @@
+// Per-particle state, one contiguous array per property (structure of arrays).
+// Hot data (position, velocity, angular velocity, force, torque) is separate from per-particle
+// constants (radius, inverse mass, inverse inertia, material).
+#pragma once
+
+#include "core/constants.h"
+#include "core/vec3.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace veridem::dem
+{
+
+struct ParticleStore
+{
+    std::vector<Vec3> position;         // x [m]
+    std::vector<Vec3> velocity;         // v [m/s]
+    std::vector<Vec3> angularVelocity;  // w [rad/s]
+    std::vector<Vec3> force;            // contact force of the current step [N] (gravity excluded)
+    std::vector<Vec3> torque;           // contact torque of the current step [N m]
+    std::vector<Real> radius;           // [m]
+    std::vector<Real> mass;             // [kg]
+    std::vector<Real> invMass;          // [1/kg]
+    std::vector<Real> invInertia;       // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
+    std::vector<std::uint32_t> material;
+
+    std::size_t size() const { return position.size(); }
+
+    /// Adds a solid sphere; returns its index. radius [m], density [kg/m^3].
+    std::uint32_t add(Vec3 x, Vec3 v, Vec3 w, Real r, Real density, std::uint32_t materialId)
+    {
+        const Real m = density * (4.0 / 3.0) * kPi * r * r * r;
+        position.push_back(x);
+        velocity.push_back(v);
+        angularVelocity.push_back(w);
+        force.push_back({});
+        torque.push_back({});
+        radius.push_back(r);
+        mass.push_back(m);
+        invMass.push_back(1.0 / m);
+        invInertia.push_back(1.0 / (0.4 * m * r * r));
+        material.push_back(materialId);
+        return static_cast<std::uint32_t>(position.size() - 1);
+    }
+
+    void reserve(std::size_t n)
+    {
+        for (auto* a : {&position, &velocity, &angularVelocity, &force, &torque})
+            a->reserve(n);
+        for (auto* a : {&radius, &mass, &invMass, &invInertia})
+            a->reserve(n);
+        material.reserve(n);
+    }
+};
+
+} // namespace veridem::dem

@@ -1,0 +1,126 @@
+// Walls: analytic geometry plus prescribed motion. A wall contact goes through the same contact
+// law as a particle pair; the wall is a partner of infinite mass whose surface velocity at the
+// contact point P is  V(P) = velocity + angularVelocity x (P - rotationCentre).
+//
+// Shapes (all one-sided; the particle lives on the side the normal points to):
+//   Plane     infinite plane through `point` with unit `normal`; optional finite disk radius
+//             (a turntable is a disk that rotates about its own normal).
+//   Dish      the inside of a sphere of radius R whose lowest point is `lowestPoint`
+//             (centre C = lowestPoint + R z); only the lower hemisphere is solid.
+//
+// Rotation is restricted to the shape's symmetry axis (plane normal, dish vertical axis), so the
+// geometry itself never changes with time; translation moves the geometry.
+#pragma once
+
+#include "core/vec3.h"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <variant>
+
+namespace veridem::dem
+{
+
+struct PlaneShape
+{
+    Vec3 point;                                           // a point of the plane [m] (disk centre)
+    Vec3 normal{0, 0, 1};                                 // unit normal into the particle side
+    Real diskRadius = std::numeric_limits<Real>::infinity();  // [m]; infinite plane by default
+};
+
+struct DishShape
+{
+    Vec3 lowestPoint;         // [m]
+    Real sphereRadius = 1.0;  // R [m]
+};
+
+struct WallMotion
+{
+    Vec3 velocity;         // translation [m/s]
+    Vec3 angularVelocity;  // [rad/s], along the shape's symmetry axis
+    Vec3 rotationCentre;   // a point of the rotation axis at t = 0 [m] (moves with the translation)
+};
+
+struct Wall
+{
+    std::string name;
+    std::variant<PlaneShape, DishShape> shape;
+    WallMotion motion;
+    std::uint32_t material = 0;
+    Vec3 displacement;  // accumulated translation since t = 0 [m] (updated by the step)
+};
+
+/// Contact of a sphere (centre x, radius r) with a wall shape.
+struct WallGap
+{
+    bool touching = false;
+    Real overlap = 0;      // [m]
+    Vec3 normal;           // unit, from the wall towards the sphere centre
+    Real effectiveRadius;  // R* for Hertz/rolling [m]
+};
+
+inline WallGap wallGap(const PlaneShape& plane, const Vec3& offset, const Vec3& x, Real r)
+{
+    WallGap g;
+    const Vec3 relative = x - (plane.point + offset);
+    const Real distance = dot(relative, plane.normal);
+    const Real overlap = r - distance;
+    if (overlap <= 0)
+        return g;
+    if (std::isfinite(plane.diskRadius))
+    {
+        const Vec3 inPlane = relative - distance * plane.normal;
+        if (lengthSquared(inPlane) > plane.diskRadius * plane.diskRadius)
+            return g;
+    }
+    if (distance < -r)  // fully behind the plane: not a contact of this one-sided wall
+        return g;
+    g.touching = true;
+    g.overlap = overlap;
+    g.normal = plane.normal;
+    g.effectiveRadius = r;
+    return g;
+}
+
+inline WallGap wallGap(const DishShape& dish, const Vec3& offset, const Vec3& x, Real r)
+{
+    WallGap g;
+    const Vec3 centre = dish.lowestPoint + offset + Vec3{0, 0, dish.sphereRadius};
+    const Vec3 toCentre = centre - x;
+    if (x.z > centre.z)  // above the rim of the hemisphere
+        return g;
+    const Real distance = length(toCentre);
+    const Real overlap = distance + r - dish.sphereRadius;
+    if (overlap <= 0 || distance == 0)
+        return g;
+    g.touching = true;
+    g.overlap = overlap;
+    g.normal = toCentre / distance;
+    // Concave contact: 1/R* = 1/r - 1/R.
+    g.effectiveRadius = r * dish.sphereRadius / (dish.sphereRadius - r);
+    return g;
+}
+
+inline WallGap wallGap(const Wall& wall, const Vec3& x, Real r)
+{
+    return std::visit([&](const auto& shape) { return wallGap(shape, wall.displacement, x, r); }, wall.shape);
+}
+
+/// Velocity of the wall material at point P [m/s].
+inline Vec3 wallSurfaceVelocity(const Wall& wall, const Vec3& point)
+{
+    return wall.motion.velocity +
+           cross(wall.motion.angularVelocity, point - (wall.motion.rotationCentre + wall.displacement));
+}
+
+/// Unit normal of a plane tilted by `tilt` [rad] from +z so that its downhill direction (in the
+/// plane) points at azimuth `downhillAzimuth` [rad] (0 = +x east, pi/2 = +y north).
+inline Vec3 tiltedNormal(Real tilt, Real downhillAzimuth)
+{
+    return {std::sin(tilt) * std::cos(downhillAzimuth), std::sin(tilt) * std::sin(downhillAzimuth),
+            std::cos(tilt)};
+}
+
+} // namespace veridem::dem
