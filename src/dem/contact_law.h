@@ -23,7 +23,8 @@ struct ContactInput
     Vec3 relativeAngularVelocity;  // w_i - w_partner [rad/s]
     Real effectiveMass = 0;        // m* [kg]
     Real effectiveRadius = 0;      // R* [m] (Hertz, and R_r for dimensionless rolling friction)
-    Real rollingInertia = 0;       // I_r [kg m^2], reduced moment of inertia
+    Real rollingInertia = 0;       // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
+    Real spinInertia = 0;          // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
 };
 
 /// Per-contact history carried from step to step.
@@ -118,7 +119,7 @@ inline ContactOutput evaluateContact(const PairParams& p, const ContactInput& in
     if (p.rollingModel == RollingModel::ConstantTorque)
     {
         out.rollingTorque = constantRollingTorque(rollingFrictionLength(p, in.effectiveRadius), out.normalForce,
-                                                  in.relativeAngularVelocity, in.rollingInertia, dt);
+                                                  in.relativeAngularVelocity, in.spinInertia, dt);
     }
     else if (p.rollingModel == RollingModel::Epsd)
     {

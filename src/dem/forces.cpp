@@ -47,7 +47,9 @@ void computePairForces(World& world, Real dt)
         in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
         in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
         in.effectiveRadius = ri * rj / touching;
-        in.rollingInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
+                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
 
         const PairParams& params = world.pairs(p.material[i], p.material[j]);
         const ContactOutput out = evaluateContact(params, in, list.history[k], dt);
@@ -98,7 +100,8 @@ void computeWallForces(World& world, Real dt)
             in.relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
             in.effectiveMass = p.mass[i];
             in.effectiveRadius = gap.effectiveRadius;
-            in.rollingInertia = 1.0 / p.invInertia[i];
+            in.spinInertia = 1.0 / p.invInertia[i];
+            in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
 
             const PairParams& params = world.pairs(p.material[i], wall.material);
             const ContactOutput out = evaluateContact(params, in, history, dt);

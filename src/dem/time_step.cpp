@@ -67,7 +67,7 @@ TimeStepEstimate estimateTimeStep(const World& world, Real characteristicSpeed)
         const auto m = p.material[i];
         minMass[m] = std::fmin(minMass[m], p.mass[i]);
         minRadius[m] = std::fmin(minRadius[m], p.radius[i]);
-        minInertia[m] = std::fmin(minInertia[m], 1.0 / p.invInertia[i]);
+        minInertia[m] = std::fmin(minInertia[m], 1.0 / p.invInertia[i]);  // twist: I alone
     }
     PairTable table;
     table.build(world.materials);
