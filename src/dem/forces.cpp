@@ -94,9 +94,13 @@ void computeWallForces(World& world, Real dt)
             in.normal = gap.normal;
             in.overlap = gap.overlap;
             const Vec3 arm = -r * gap.normal;  // centre to contact point
-            const Vec3 contactPoint = p.position[i] + arm;
-            in.relativeVelocity =
-                p.velocity[i] + cross(p.angularVelocity[i], arm) - wallSurfaceVelocity(wall, contactPoint);
+            // The particle's velocities are those of the half step t+dt/2, so the wall's surface
+            // velocity is taken at the contact point of the half step too (x - v dt/2). Using
+            // x(t+dt) would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball
+            // orbiting on a turntable would lose speed at a rate of order Omega v dt.
+            const Vec3 midStepContactPoint = p.position[i] - (0.5 * dt) * p.velocity[i] + arm;
+            in.relativeVelocity = p.velocity[i] + cross(p.angularVelocity[i], arm) -
+                                  wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
             in.relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
             in.effectiveMass = p.mass[i];
             in.effectiveRadius = gap.effectiveRadius;

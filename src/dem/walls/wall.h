@@ -108,11 +108,12 @@ inline WallGap wallGap(const Wall& wall, const Vec3& x, Real r)
     return std::visit([&](const auto& shape) { return wallGap(shape, wall.displacement, x, r); }, wall.shape);
 }
 
-/// Velocity of the wall material at point P [m/s].
-inline Vec3 wallSurfaceVelocity(const Wall& wall, const Vec3& point)
+/// Velocity of the wall material at point P [m/s], at time offset `timeOffset` [s] from the
+/// wall's current position (the rotation axis moves with the wall's translation).
+inline Vec3 wallSurfaceVelocity(const Wall& wall, const Vec3& point, Real timeOffset = 0)
 {
-    return wall.motion.velocity +
-           cross(wall.motion.angularVelocity, point - (wall.motion.rotationCentre + wall.displacement));
+    const Vec3 axisPoint = wall.motion.rotationCentre + wall.displacement + timeOffset * wall.motion.velocity;
+    return wall.motion.velocity + cross(wall.motion.angularVelocity, point - axisPoint);
 }
 
 /// Unit normal of a plane tilted by `tilt` [rad] from +z so that its downhill direction (in the
