@@ -2,6 +2,7 @@
 
 #include "core/constants.h"
 #include "core/error.h"
+#include "dem/models/normal.h"
 #include "dem/walls/wall.h"
 #include "io/toml_reader.h"
 
@@ -239,6 +240,34 @@ void readLattice(TableReader& t, dem::World& world)
             }
 }
 
+/// [[pair]]: explicit friction, restitution or rolling friction for one material pair.
+void applyPairOverride(TableReader& t, dem::World& world)
+{
+    const std::string a = t.requiredString("first"), b = t.requiredString("second");
+    const std::uint32_t ia = world.materialId(a), ib = world.materialId(b);
+    dem::PairParams params = world.pairs(ia, ib);
+    if (auto mu = t.optionalNumber("friction"))
+    {
+        t.requireNonNegative("friction", *mu, "");
+        params.mu = *mu;
+    }
+    if (auto e = t.optionalNumber("restitution"))
+    {
+        if (!(*e > 0 && *e <= 1))
+            t.fail("restitution", "must be in (0, 1]");
+        params.dampingRatio = params.hertzBeta = dem::dampingRatioFromRestitution(*e);
+    }
+    if (auto muR = t.optionalNumber("rolling_friction"))
+    {
+        t.requireNonNegative("rolling_friction", *muR, "m");
+        params.rollingLength = *muR;
+        params.rollingDimensionless = 0;
+    }
+    t.finish();
+    world.pairs.at(ia, ib) = params;
+    world.pairs.at(ib, ia) = params;
+}
+
 void checkInitialOverlaps(dem::World& world, Real tolerance)
 {
     dem::prepare(world);
@@ -309,6 +338,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     for (auto& m : materials)
         world.addMaterial(readMaterial(m));
 
+    auto pairs = top.arrayOfTables("pair");
     for (auto& w : top.arrayOfTables("wall"))
         world.walls.push_back(readWall(w, world));
 
@@ -350,7 +380,9 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         throw InputError(file + ": the scene has no particles ([[sphere]], [[particles]] or [[lattice]])");
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
-    checkInitialOverlaps(world, overlapTolerance);
+    checkInitialOverlaps(world, overlapTolerance); // also builds the pair table
+    for (auto& pair : pairs)
+        applyPairOverride(pair, world);
     return scene;
 }
 
