@@ -167,6 +167,12 @@ void World::refreshActiveLists()
     listsValid_ = true;
 }
 
+void World::setNodeVelocity(std::uint32_t node, Vec2 velocity)
+{
+    if (node < nodes_.size() && !nodes_.prescribed[node])
+        nodes_.velocity[node] = velocity;
+}
+
 void World::step()
 {
     if (!listsValid_)
@@ -291,12 +297,25 @@ void World::computeContactForces()
             const Real targetAltitude = triangleMinAltitude_[tri[t]];
             const auto& contactorNodes = triangles_.nodes[tri[c]];
             const auto& targetNodes = triangles_.nodes[tri[t]];
+            // Barycentric coordinates of the contactor's nodes in the target, shared by its edges. If
+            // all three lie outside one target edge (lambda_k < 0), no contactor edge can enter.
+            const std::array<std::array<Real, 3>, 3> lambda{
+                barycentric(x[c][0], x[t]), barycentric(x[c][1], x[t]), barycentric(x[c][2], x[t])};
+            bool separated = false;
+            for (int k = 0; k < 3; ++k)
+                separated = separated || (lambda[0][k] < 0 && lambda[1][k] < 0 && lambda[2][k] < 0);
+            if (separated)
+            {
+                for (int e = 0; e < 3; ++e)
+                    couple.spring[3 * role + e] = couple.normal[3 * role + e] = 0;
+                continue;
+            }
             for (int e = 0; e < 3; ++e)
             {
                 Real& spring = couple.spring[3 * role + e];
                 Real& previousNormal = couple.normal[3 * role + e];
                 const int e1 = (e + 1) % 3;
-                const EdgePenetration pen = edgeInTriangle(x[c][e], x[c][e1], x[t]);
+                const EdgePenetration pen = edgeInTriangle(lambda[e], lambda[e1]);
                 if (!pen.touching())
                 {
                     spring = 0;

@@ -82,6 +82,8 @@ class World
     std::size_t prescribeNodes(std::uint32_t body, Vec2 lo, Vec2 hi, Vec2 velocity);
     /// Sets the velocity of every free node of `body` [m/s].
     void setBodyVelocity(std::uint32_t body, Vec2 velocity);
+    /// Sets the velocity of one free node [m/s] (ignored for prescribed nodes).
+    void setNodeVelocity(std::uint32_t node, Vec2 velocity);
 
     /// One explicit step: element forces -> detection -> contact forces -> integration.
     void step();
@@ -101,6 +103,7 @@ class World
     const FrictionDiagnostics& frictionDiagnostics() const { return diagnostics_; }
     std::size_t detections() const { return detections_; }
     std::size_t coupleCount() const { return contacts_.couples().size(); }
+    const std::vector<Couple>& couples() const { return contacts_.couples(); }
 
   private:
     void refreshActiveLists();

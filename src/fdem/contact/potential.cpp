@@ -5,21 +5,34 @@
 namespace veridem::fdem
 {
 
+std::array<Real, 3> barycentric(const Vec2& p, const std::array<Vec2, 3>& target)
+{
+    // lambda_k is the area of (p, node k+1, node k+2) over the triangle's area.
+    const Real inverseTwiceArea = 1 / cross(target[1] - target[0], target[2] - target[0]);
+    std::array<Real, 3> l;
+    for (int k = 0; k < 3; ++k)
+    {
+        const Vec2& q1 = target[(k + 1) % 3];
+        l[k] = cross(target[(k + 2) % 3] - q1, p - q1) * inverseTwiceArea;
+    }
+    return l;
+}
+
 EdgePenetration edgeInTriangle(const Vec2& p0, const Vec2& p1, const std::array<Vec2, 3>& target)
 {
+    return edgeInTriangle(barycentric(p0, target), barycentric(p1, target));
+}
+
+EdgePenetration edgeInTriangle(const std::array<Real, 3>& start, const std::array<Real, 3>& end)
+{
     EdgePenetration r;
-    const Real twiceArea = cross(target[1] - target[0], target[2] - target[0]);
-    // lambda_k(s) = a[k] + b[k] s; lambda_k is the area of (P, node k+1, node k+2) over the area.
+    // lambda_k(s) = a[k] + b[k] s along the edge
     Real a[3], b[3];
     Real sMin = 0, sMax = 1;
     for (int k = 0; k < 3; ++k)
     {
-        const Vec2& q1 = target[(k + 1) % 3];
-        const Vec2 e = target[(k + 2) % 3] - q1;
-        const Real l0 = cross(e, p0 - q1) / twiceArea;
-        const Real l1 = cross(e, p1 - q1) / twiceArea;
-        a[k] = l0;
-        b[k] = l1 - l0;
+        a[k] = start[k];
+        b[k] = end[k] - start[k];
         if (b[k] > 0)
             sMin = std::max(sMin, -a[k] / b[k]);
         else if (b[k] < 0)

@@ -43,6 +43,13 @@ struct EdgePenetration
 /// Integrates the target's potential along the edge p0 -> p1. `target` must be counter-clockwise.
 EdgePenetration edgeInTriangle(const Vec2& p0, const Vec2& p1, const std::array<Vec2, 3>& target);
 
+/// Barycentric coordinates lambda_k of p in the counter-clockwise triangle `target` [1].
+std::array<Real, 3> barycentric(const Vec2& p, const std::array<Vec2, 3>& target);
+
+/// The same integral from the barycentric coordinates of the edge's end points in the target
+/// (lets a caller share them between the edges of one triangle).
+EdgePenetration edgeInTriangle(const std::array<Real, 3>& start, const std::array<Real, 3>& end);
+
 /// The potential contact forces of a triangle pair, both roles, without friction [N/m].
 struct TrianglePairForces
 {
