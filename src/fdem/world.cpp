@@ -269,16 +269,13 @@ void World::computeContactForces()
     for (Couple& couple : contacts_.couples())
     {
         const std::uint32_t tri[2] = {couple.first, couple.second};
-        std::array<Vec2, 3> x[2], v[2];
+        std::array<Vec2, 3> x[2];
         Vec2 lo[2], hi[2];
         for (int k = 0; k < 2; ++k)
         {
             const auto& ids = triangles_.nodes[tri[k]];
             for (int i = 0; i < 3; ++i)
-            {
                 x[k][i] = nodes_.position[ids[i]];
-                v[k][i] = nodes_.velocity[ids[i]];
-            }
             lo[k] = {std::min({x[k][0].x, x[k][1].x, x[k][2].x}),
                      std::min({x[k][0].y, x[k][1].y, x[k][2].y})};
             hi[k] = {std::max({x[k][0].x, x[k][1].x, x[k][2].x}),
@@ -290,6 +287,10 @@ void World::computeContactForces()
             couple.normal.fill(0);
             continue;
         }
+        std::array<Vec2, 3> v[2];
+        for (int k = 0; k < 2; ++k)
+            for (int i = 0; i < 3; ++i)
+                v[k][i] = nodes_.velocity[triangles_.nodes[tri[k]][i]];
         for (int role = 0; role < 2; ++role)
         {
             const int c = role, t = 1 - role;

@@ -2,11 +2,13 @@
 #include "fdem/broadphase.h"
 #include "fdem/mesher.h"
 #include "fdem/scene.h"
+#include "fdem/scene_runner.h"
 #include "fdem/time_step.h"
 #include "fdem/world.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <random>
 
 namespace veridem::fdem
@@ -153,6 +155,39 @@ TEST(Scene, BadInputGivesOneLineErrors)
     expectError(std::string(s).replace(s.find("nx = 2"), 6, "nx = 0"), "nx");
     expectError(std::string(s).replace(s.find("material = \"rock\""), 17, "material = \"ice\""),
                 "unknown material");
+}
+
+TEST(Scene, ReadsAGmshMeshRelativeToTheSceneFile)
+{
+    std::string s = kScene;
+    s.replace(s.find("rectangle = {"), s.find('\n', s.find("rectangle = {")) - s.find("rectangle = {"),
+              "mesh = \"square_v41.msh\"");
+    const Scene scene = readScene(parse(s), std::string(VERIDEM_FDEM_TEST_DATA) + "/scene.toml");
+    ASSERT_EQ(scene.bodies.size(), 1u);
+    EXPECT_EQ(scene.bodies[0].mesh.triangles.size(), 4u);
+}
+
+TEST(SceneRunner, RefusesATimeStepAboveTheLimitAndRunsBelowIt)
+{
+    std::string s = kScene;
+    s.replace(s.find("time_step = 1e-6"), 16, "time_step = 1e-4");
+    const auto out = std::filesystem::temp_directory_path() / "veridem_fdem_runner_test";
+    try
+    {
+        runScene(parse(s), "test.toml", out, false, false);
+        FAIL() << "expected InputError";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("exceeds the stable limit"), std::string::npos) << e.what();
+    }
+    std::string ok = kScene;
+    ok.replace(ok.find("end_time = 0.01"), 15, "end_time = 1e-4");
+    EXPECT_EQ(runScene(parse(ok), "test.toml", out, false, false), 0);
+    EXPECT_TRUE(std::filesystem::exists(out / "series.pvd"));
+    EXPECT_TRUE(std::filesystem::exists(out / "bodies.csv"));
+    EXPECT_TRUE(std::filesystem::exists(out / "frame_00001.vtu"));
+    std::filesystem::remove_all(out);
 }
 
 } // namespace
