@@ -24,7 +24,7 @@ void ContactList::rebuild(const std::vector<std::pair<std::uint32_t, std::uint32
         if (old < previous_.size() && previous_[old].first == a && previous_[old].second == b)
         {
             c.spring = previous_[old].spring;
-            c.normal = previous_[old].normal;
+            c.depth = previous_[old].depth;
         }
         couples_.push_back(c);
     }

@@ -48,6 +48,9 @@ SlidingBlockResult runSlidingBlock(const SlidingBlockSetup& s)
     const std::uint32_t block = 1;
     while (world.time() < s.settleTime)
         world.step();
+    ContactParameters sliding = world.settings().contact;
+    sliding.normalDampingRatio = s.slidingNormalDampingRatio;
+    world.setContactParameters(sliding);
     world.setBodyVelocity(block, {s.velocity, 0});
     const Real start = world.time();
     const Real x0 = world.bodyState(block).centroid.x;

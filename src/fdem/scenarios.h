@@ -12,17 +12,18 @@ namespace veridem::fdem
 /// fixed base, given a horizontal velocity, stops after L = v^2 / (2 mu g).
 struct SlidingBlockSetup
 {
-    Real velocity = 1;        ///< v_i [m/s]
-    Real timeStep = 1e-6;     ///< dt [s]
-    int cells = 4;            ///< n x n cells of 2 triangles in the block
-    Real side = 0.05;         ///< l [m]
-    Real density = 2650;      ///< rho [kg/m^3]
-    Real youngsModulus = 1e9; ///< E [Pa]
-    Real poissonRatio = 0.25; ///< nu [1], plane strain
-    Real friction = 0.5;      ///< mu [1]
-    Real gravity = 9.81;      ///< g [m/s^2]
-    Real penaltyFactor = 10;  ///< p_n = p_t = penaltyFactor * E
-    Real normalDampingRatio = 0.3;
+    Real velocity = 1;                  ///< v_i [m/s]
+    Real timeStep = 1e-6;               ///< dt [s]
+    int cells = 4;                      ///< n x n cells of 2 triangles in the block
+    Real side = 0.05;                   ///< l [m]
+    Real density = 2650;                ///< rho [kg/m^3]
+    Real youngsModulus = 1e9;           ///< E [Pa]
+    Real poissonRatio = 0.25;           ///< nu [1], plane strain
+    Real friction = 0.5;                ///< mu [1]
+    Real gravity = 9.81;                ///< g [m/s^2]
+    Real penaltyFactor = 10;            ///< p_n = p_t = penaltyFactor * E
+    Real normalDampingRatio = 0.3;      ///< zeta_n while settling
+    Real slidingNormalDampingRatio = 0; ///< zeta_n after v_i is imposed (see docs/fdem.md)
     Real highestModeDampingRatio =
         0.5;                 ///< sets the element viscosity eta_v = 2 xi (lambda + 2 mu) / omega_max
     Real baseCellFactor = 4; ///< base cell size / block cell size (rigid base, one cell thick)

@@ -169,6 +169,8 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
         contact->requireNonNegative("friction", c.friction, "");
         c.normalDampingRatio = contact->number("normal_damping_ratio", 0);
         contact->requireNonNegative("normal_damping_ratio", c.normalDampingRatio, "");
+        scene.settleNormalDampingRatio = contact->number("settle_normal_damping_ratio", c.normalDampingRatio);
+        contact->requireNonNegative("settle_normal_damping_ratio", scene.settleNormalDampingRatio, "");
         c.tangentialDampingRatio = contact->number("tangential_damping_ratio", 0);
         contact->requireNonNegative("tangential_damping_ratio", c.tangentialDampingRatio, "");
         scene.settings.buffer = contact->number("buffer", 0);

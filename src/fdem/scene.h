@@ -24,9 +24,10 @@ struct SceneBoundary
 struct Scene
 {
     WorldSettings settings;
-    Real endTime = 0;        ///< [s]
-    Real outputInterval = 0; ///< [s]; 0: first and last state only
-    Real settleTime = 0;     ///< [s] run with zero body velocities before t = 0, then impose them
+    Real endTime = 0;                  ///< [s]
+    Real outputInterval = 0;           ///< [s]; 0: first and last state only
+    Real settleTime = 0;               ///< [s] run with zero body velocities before t = 0, then impose them
+    Real settleNormalDampingRatio = 0; ///< zeta_n during the settling [1]
     std::vector<std::string> materialNames;
     std::vector<Material> materials;
     std::vector<BodyDefinition> bodies;

@@ -5,6 +5,7 @@
 #include "fdem/scene.h"
 #include "fdem/time_step.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,7 +18,12 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
 {
     const Scene scene = readScene(sceneTable, sceneFile);
     World world = buildWorld(scene, scene.settleTime > 0);
+    // The limit covers both phases: the settling may use a stronger normal dashpot.
+    ContactParameters worst = scene.settings.contact;
+    worst.normalDampingRatio = std::max(worst.normalDampingRatio, scene.settleNormalDampingRatio);
+    world.setContactParameters(worst);
     const TimeStepLimit limit = stableTimeStep(world);
+    world.setContactParameters(scene.settings.contact);
     const Real dt = scene.settings.timeStep;
     std::printf("fdem2d: %zu nodes, %zu triangles, %zu bodies; %s; dt = %g s\n", world.nodes().size(),
                 world.triangles().size(), world.bodyCount(), limit.describe().c_str(), dt);
@@ -35,8 +41,12 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
     if (scene.settleTime > 0)
     {
         const auto settleSteps = static_cast<std::uint64_t>(std::ceil(scene.settleTime / dt));
+        ContactParameters settling = scene.settings.contact;
+        settling.normalDampingRatio = scene.settleNormalDampingRatio;
+        world.setContactParameters(settling);
         for (std::uint64_t i = 0; i < settleSteps; ++i)
             world.step();
+        world.setContactParameters(scene.settings.contact);
         for (std::uint32_t b = 0; b < world.bodyCount(); ++b)
             if (!scene.bodies[b].fixed)
                 world.setBodyVelocity(b, scene.bodies[b].velocity);

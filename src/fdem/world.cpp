@@ -16,13 +16,15 @@
 //   tangential:             k_t = 3 p_t L_in / H_t   (same form, so p_t = p_n gives k_t = k_n)
 //   tangential dashpot:     eta_t = 2 zeta_t sqrt(1.5 p_t rho_c) L_in, the critical value for a node of
 //                           mass rho h^2 / 2 on a spring 3 p h (square elements of size h), times zeta_t.
-//   normal dashpot:         F_d = 2 zeta_n sqrt(m_eff / k_n) dF_e/dt, a dashpot on the penetration rate
-//                           (dF_e/dt)/k_n, m_eff the reduced mass of the edge's and the target's nodes.
-//                           It acts on the rate of change of the elastic force, not on the relative
-//                           velocity along the edge normal: an edge sliding along its own normal at
-//                           constant penetration (the leading face of a sliding block entering the next
-//                           base element) must not be damped, or it brakes the block (measured: 0.4 %
-//                           short stop distance at 6 m/s with the kinematic dashpot).
+//   normal dashpot:         F_d = 2 zeta_n sqrt(m_eff k_n) d(delta)/dt on the mean penetration depth
+//                           delta = F_e / k_n, m_eff the reduced mass of the edge's and the target's nodes.
+//                           Not on the relative velocity along the edge normal: the leading face of a
+//                           sliding block enters the next base element at constant depth while moving at
+//                           v along its own normal; damping v braked the block (stop distance 0.4 % short
+//                           at 6 m/s). Not on dF_e/dt either: a contact whose overlap grows or shrinks
+//                           at constant depth was then damped, and the clipping at F >= 0 of the
+//                           shrinking one left a net upward dashpot force that lowered the elastic
+//                           normal force and the friction cap (over-travel growing with v: 6e-5 at 6 m/s).
 // The Coulomb cap uses the elastic normal force (paper eq. 2: "Fn is normal elastic force").
 // Velocities are the half-step values v_{n-1/2}, the ones that carried the nodes to x_n, so the
 // tangential spring increment v_t dt is at the positions' time level (BENCHMARKS 1a (b)).
@@ -41,13 +43,11 @@
 namespace veridem::fdem
 {
 
-World::World(const WorldSettings& settings) : settings_(settings)
+namespace
 {
-    const ContactParameters& c = settings.contact;
-    if (!(settings.timeStep > 0) || !std::isfinite(settings.timeStep))
-        throw InputError("time step must be > 0 s (got " + std::to_string(settings.timeStep) + ")");
-    if (!isFinite(settings.gravity))
-        throw InputError("gravity must be finite");
+
+void checkContactParameters(const ContactParameters& c)
+{
     if (!(c.normalPenalty > 0) || !std::isfinite(c.normalPenalty))
         throw InputError("contact normal penalty must be > 0 Pa (got " + std::to_string(c.normalPenalty) +
                          ")");
@@ -59,8 +59,25 @@ World::World(const WorldSettings& settings) : settings_(settings)
     if (!(c.normalDampingRatio >= 0) || !(c.tangentialDampingRatio >= 0) ||
         !std::isfinite(c.normalDampingRatio) || !std::isfinite(c.tangentialDampingRatio))
         throw InputError("contact damping ratios must be >= 0");
+}
+
+} // namespace
+
+World::World(const WorldSettings& settings) : settings_(settings)
+{
+    if (!(settings.timeStep > 0) || !std::isfinite(settings.timeStep))
+        throw InputError("time step must be > 0 s (got " + std::to_string(settings.timeStep) + ")");
+    if (!isFinite(settings.gravity))
+        throw InputError("gravity must be finite");
+    checkContactParameters(settings.contact);
     if (!(settings.buffer >= 0) || !std::isfinite(settings.buffer))
         throw InputError("contact buffer must be >= 0 m (got " + std::to_string(settings.buffer) + ")");
+}
+
+void World::setContactParameters(const ContactParameters& contact)
+{
+    checkContactParameters(contact);
+    settings_.contact = contact;
 }
 
 std::uint32_t World::addMaterial(const Material& m, const std::string& name)
@@ -284,7 +301,7 @@ void World::computeContactForces()
         if (lo[0].x > hi[1].x || lo[1].x > hi[0].x || lo[0].y > hi[1].y || lo[1].y > hi[0].y)
         {
             couple.spring.fill(0); // apart: every edge contact is open
-            couple.normal.fill(0);
+            couple.depth.fill(0);
             continue;
         }
         std::array<Vec2, 3> v[2];
@@ -308,19 +325,19 @@ void World::computeContactForces()
             if (separated)
             {
                 for (int e = 0; e < 3; ++e)
-                    couple.spring[3 * role + e] = couple.normal[3 * role + e] = 0;
+                    couple.spring[3 * role + e] = couple.depth[3 * role + e] = 0;
                 continue;
             }
             for (int e = 0; e < 3; ++e)
             {
                 Real& spring = couple.spring[3 * role + e];
-                Real& previousNormal = couple.normal[3 * role + e];
+                Real& previousDepth = couple.depth[3 * role + e];
                 const int e1 = (e + 1) % 3;
                 const EdgePenetration pen = edgeInTriangle(lambda[e], lambda[e1]);
                 if (!pen.touching())
                 {
                     spring = 0;
-                    previousNormal = 0;
+                    previousDepth = 0;
                     continue;
                 }
                 const Vec2 edge = x[c][e1] - x[c][e];
@@ -336,10 +353,14 @@ void World::computeContactForces()
                 const Real insideLength = edgeLength * pen.insideFraction;
 
                 const Real elasticNormal = cp.normalPenalty * edgeLength * pen.integral;
+                // Normal dashpot on the rate of the mean penetration depth delta = F_e / k_n (the depth a
+                // flat contact of stiffness k_n would need): an edge that slides at constant depth while
+                // its overlap grows or shrinks (entering or leaving a base element) is not damped.
+                const Real normalStiffness = 3 * cp.normalPenalty * insideLength / targetAltitude;
+                const Real depth = elasticNormal / normalStiffness;
                 Real normalForce = elasticNormal;
-                if (cp.normalDampingRatio > 0 && previousNormal > 0)
+                if (cp.normalDampingRatio > 0 && previousDepth > 0)
                 {
-                    const Real stiffness = 3 * cp.normalPenalty * insideLength / targetAltitude;
                     const Real contactorMass =
                         0.5 * (nodes_.mass[contactorNodes[e]] + nodes_.mass[contactorNodes[e1]]);
                     Real targetMass = 0;
@@ -354,14 +375,13 @@ void World::computeContactForces()
                         (contactorFree ? 1 / contactorMass : 0) + (targetFree ? 1 / targetMass : 0);
                     if (inverseMass > 0)
                     {
-                        const Real penetrationRate =
-                            (elasticNormal - previousNormal) / (stiffness * dt); // [m/s]
-                        const Real eta = 2 * cp.normalDampingRatio * std::sqrt(stiffness / inverseMass);
+                        const Real penetrationRate = (depth - previousDepth) / dt; // [m/s]
+                        const Real eta = 2 * cp.normalDampingRatio * std::sqrt(normalStiffness / inverseMass);
                         normalForce = std::max(Real(0), elasticNormal + eta * penetrationRate);
                         normalDampingWork_ += (normalForce - elasticNormal) * penetrationRate * dt;
                     }
                 }
-                previousNormal = elasticNormal;
+                previousDepth = depth;
                 Real tangentialForce = 0;
                 if (cp.friction > 0)
                 {

@@ -82,6 +82,8 @@ class World
     std::size_t prescribeNodes(std::uint32_t body, Vec2 lo, Vec2 hi, Vec2 velocity);
     /// Sets the velocity of every free node of `body` [m/s].
     void setBodyVelocity(std::uint32_t body, Vec2 velocity);
+    /// Replaces the contact parameters (same checks as the constructor); history is kept.
+    void setContactParameters(const ContactParameters& contact);
     /// Sets the velocity of one free node [m/s] (ignored for prescribed nodes).
     void setNodeVelocity(std::uint32_t node, Vec2 velocity);
 
