@@ -154,7 +154,6 @@ VERIDEM_CASE({.name = "fdem_sliding_block_v1",
                   SlidingBlockSetup s;
                   s.velocity = 1;
                   s.timeStep = 1e-6;
-                  s.creepTime = 0.02; // shorter in CI: the tolerance below scales with it
                   const SlidingBlockResult r = fdem::runSlidingBlock(s);
                   addQuantities(result, {1.0}, {r}, " dt1e-6");
                   return result;
