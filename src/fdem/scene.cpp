@@ -90,8 +90,10 @@ TriangleMesh readGeometry(toml::table& bodyTable, io::TableReader& body, const s
 {
     int kinds = 0;
     TriangleMesh mesh;
-    if (toml::table* rect = bodyTable["rectangle"].as_table())
+    if (body.has("rectangle"))
     {
+        body.table("rectangle"); // checks that it is a table and marks the key as read
+        const toml::table* rect = bodyTable["rectangle"].as_table();
         ++kinds;
         toml::table copy = *rect;
         const std::string w = where + " [rectangle]";
@@ -108,7 +110,6 @@ TriangleMesh readGeometry(toml::table& bodyTable, io::TableReader& body, const s
         r.finish();
         mesh = meshRectangle(origin, s, static_cast<int>(nx), static_cast<int>(ny),
                              pattern == "right" ? DiagonalPattern::Right : DiagonalPattern::Alternate);
-        body.table("rectangle"); // mark the key as read
     }
     if (auto polygon = takePolygon(bodyTable, "polygon", where, file))
     {

@@ -167,6 +167,23 @@ TEST(Scene, ReadsAGmshMeshRelativeToTheSceneFile)
     EXPECT_EQ(scene.bodies[0].mesh.triangles.size(), 4u);
 }
 
+TEST(Scene, ReadsAPolygonBodyAndRejectsTwoGeometries)
+{
+    std::string s = kScene;
+    const auto at = s.find("rectangle = {");
+    const auto end = s.find('\n', at);
+    std::string polygon = s;
+    polygon.replace(at, end - at, "polygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05], [0.0, 0.05]]");
+    const Scene scene = readScene(parse(polygon), "test.toml");
+    EXPECT_EQ(scene.bodies[0].mesh.triangles.size(), 2u);
+    std::string both = s;
+    both.insert(end, "\npolygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05]]");
+    expectError(both, "exactly one of");
+    std::string notTable = s;
+    notTable.replace(at, end - at, "rectangle = 5");
+    expectError(notTable, "rectangle");
+}
+
 TEST(SceneRunner, RefusesATimeStepAboveTheLimitAndRunsBelowIt)
 {
     std::string s = kScene;
