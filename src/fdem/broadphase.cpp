@@ -1,0 +1,81 @@
+#include "fdem/broadphase.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace veridem::fdem
+{
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+findCandidatePairs(const std::vector<BoundingCircle>& circles, Real buffer)
+{
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    const std::size_t n = circles.size();
+    if (n < 2)
+        return pairs;
+    Vec2 lo = circles[0].centre, hi = lo;
+    Real rMax = 0;
+    for (const auto& c : circles)
+    {
+        lo = {std::min(lo.x, c.centre.x), std::min(lo.y, c.centre.y)};
+        hi = {std::max(hi.x, c.centre.x), std::max(hi.y, c.centre.y)};
+        rMax = std::max(rMax, c.radius);
+    }
+    Real cell = 2 * rMax + buffer;
+    const Real maxCells = 4.0 * static_cast<Real>(n) + 1024;
+    auto cellsAlong = [&](Real extent) { return static_cast<std::size_t>(std::floor(extent / cell)) + 1; };
+    while (static_cast<Real>(cellsAlong(hi.x - lo.x)) * static_cast<Real>(cellsAlong(hi.y - lo.y)) > maxCells)
+        cell *= 1.5;
+    const std::size_t nx = cellsAlong(hi.x - lo.x), ny = cellsAlong(hi.y - lo.y);
+    std::vector<std::size_t> cellOf(n);
+    std::vector<std::uint32_t> start(nx * ny + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const auto ix = std::min(nx - 1, static_cast<std::size_t>((circles[i].centre.x - lo.x) / cell));
+        const auto iy = std::min(ny - 1, static_cast<std::size_t>((circles[i].centre.y - lo.y) / cell));
+        cellOf[i] = iy * nx + ix;
+        ++start[cellOf[i] + 1];
+    }
+    for (std::size_t c = 0; c < nx * ny; ++c)
+        start[c + 1] += start[c];
+    std::vector<std::uint32_t> sorted(n);
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < n; ++i)
+            sorted[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+    }
+    const auto test = [&](std::uint32_t i, std::uint32_t j)
+    {
+        const BoundingCircle &a = circles[i], &b = circles[j];
+        if (a.group == b.group || (!a.active && !b.active))
+            return;
+        const Real reach = a.radius + b.radius + buffer;
+        if (lengthSquared(a.centre - b.centre) <= reach * reach)
+            pairs.emplace_back(std::min(i, j), std::max(i, j));
+    };
+    for (std::size_t iy = 0; iy < ny; ++iy)
+        for (std::size_t ix = 0; ix < nx; ++ix)
+        {
+            const std::size_t c = iy * nx + ix;
+            for (std::uint32_t p = start[c]; p < start[c + 1]; ++p)
+            {
+                for (std::uint32_t q = p + 1; q < start[c + 1]; ++q)
+                    test(sorted[p], sorted[q]);
+                // half neighbourhood: E, NW, N, NE
+                const long offsets[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+                for (const auto& o : offsets)
+                {
+                    const long jx = static_cast<long>(ix) + o[0], jy = static_cast<long>(iy) + o[1];
+                    if (jx < 0 || jy < 0 || jx >= static_cast<long>(nx) || jy >= static_cast<long>(ny))
+                        continue;
+                    const std::size_t d = static_cast<std::size_t>(jy) * nx + static_cast<std::size_t>(jx);
+                    for (std::uint32_t q = start[d]; q < start[d + 1]; ++q)
+                        test(sorted[p], sorted[q]);
+                }
+            }
+        }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+} // namespace veridem::fdem

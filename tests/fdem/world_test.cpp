@@ -1,0 +1,211 @@
+#include "core/error.h"
+#include "fdem/broadphase.h"
+#include "fdem/mesher.h"
+#include "fdem/scene.h"
+#include "fdem/scene_runner.h"
+#include "fdem/time_step.h"
+#include "fdem/world.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+namespace veridem::fdem
+{
+namespace
+{
+
+TEST(TimeStep, ElementLimitIsTheRuleOfThumb)
+{
+    // BENCHMARKS 1a: 10x10 block of 0.05 m, nu = 0.25 plane strain: dt_crit = 5.15e-6 s (power iteration)
+    const Material m{2650, 1e9, 0.25, 0, StressLaw::FiniteStrain, PlaneModel::Strain};
+    EXPECT_NEAR(pWaveSpeed(m), 672.9, 0.05);
+    const Real h = 0.005 / std::sqrt(2.0);
+    EXPECT_NEAR(elementTimeStep(h, pWaveSpeed(m), 0), 0.98 * h / pWaveSpeed(m), 1e-20);
+    EXPECT_NEAR(elementTimeStep(h, pWaveSpeed(m), 0), 5.15e-6, 0.02 * 5.15e-6);
+    EXPECT_NEAR(dampingFactor(0), 1, 1e-15);
+    EXPECT_NEAR(dampingFactor(0.75), 0.5, 1e-15); // sqrt(1 + 0.5625) - 0.75
+    EXPECT_NEAR(contactTimeStep(0.04, 1e10, 0), 2 * std::sqrt(0.04 / 1e10), 1e-20);
+
+    WorldSettings s;
+    s.contact.normalPenalty = 1e10;
+    World w(s);
+    const auto mat = w.addMaterial(m);
+    w.addBody({"block", meshRectangle({0, 0}, {0.05, 0.05}, 10, 10), mat, {}, false});
+    const TimeStepLimit limit = stableTimeStep(w);
+    EXPECT_NEAR(limit.element, 5.15e-6, 0.02 * 5.15e-6);
+    // contact: the lightest nodes (corners) belong to 2 triangles with the alternating diagonals:
+    // m = 2 rho A0 / 3 with A0 = 1.25e-5 m^2; k = 4 * 3 p L / H with L the diagonal, H = L / 2
+    const Real k = 12 * 1e10 * (0.005 * std::sqrt(2.0)) / h;
+    EXPECT_NEAR(limit.contact, 2 * std::sqrt(2 * 2650 * 1.25e-5 / 3 / k), 1e-12);
+    EXPECT_EQ(limit.limit, std::min(limit.element, limit.contact));
+}
+
+TEST(Broadphase, FindsTheSamePairsAsBruteForce)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<Real> pos(0, 1), rad(0.001, 0.03);
+    std::vector<BoundingCircle> circles(600);
+    for (std::size_t i = 0; i < circles.size(); ++i)
+        circles[i] = {{pos(rng), pos(rng) * 0.3}, rad(rng), static_cast<std::uint32_t>(i % 7), i % 3 != 0};
+    const Real buffer = 0.004;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
+    for (std::uint32_t i = 0; i < circles.size(); ++i)
+        for (std::uint32_t j = i + 1; j < circles.size(); ++j)
+        {
+            const auto &a = circles[i], &b = circles[j];
+            const Real reach = a.radius + b.radius + buffer;
+            if (a.group != b.group && (a.active || b.active) &&
+                lengthSquared(a.centre - b.centre) <= reach * reach)
+                expected.emplace_back(i, j);
+        }
+    EXPECT_EQ(findCandidatePairs(circles, buffer), expected);
+    EXPECT_FALSE(expected.empty());
+}
+
+TEST(World, RejectsNonPhysicalMaterials)
+{
+    WorldSettings s;
+    s.contact.normalPenalty = 1e9;
+    World w(s);
+    EXPECT_THROW(w.addMaterial({-1, 1e9, 0.25, 0, StressLaw::Linear, PlaneModel::Strain}), InputError);
+    EXPECT_THROW(w.addMaterial({2000, 0, 0.25, 0, StressLaw::Linear, PlaneModel::Strain}), InputError);
+    EXPECT_THROW(w.addMaterial({2000, 1e9, 0.5, 0, StressLaw::Linear, PlaneModel::Strain}), InputError);
+    s.contact.friction = 0.5; // friction without a tangential penalty
+    EXPECT_THROW(World{s}, InputError);
+}
+
+TEST(World, FreeFallFollowsGravityExactly)
+{
+    WorldSettings s;
+    s.timeStep = 1e-5;
+    s.contact.normalPenalty = 1e9;
+    World w(s);
+    const auto m = w.addMaterial({1000, 1e8, 0.3, 0, StressLaw::FiniteStrain, PlaneModel::Strain});
+    const auto b = w.addBody({"b", meshRectangle({0, 0}, {0.1, 0.1}, 3, 3), m, {0.5, 0}, false});
+    for (int i = 0; i < 1000; ++i)
+        w.step();
+    const BodyState st = w.bodyState(b);
+    // central difference: v_{n+1/2} = v0 + (n+1) g dt; x_n = x0 + dt sum v = x0 + g dt^2 n (n+1)/2
+    EXPECT_NEAR(st.velocity.y, -9.81 * 1000 * 1e-5, 1e-12);
+    EXPECT_NEAR(st.centroid.y - 0.05, -9.81 * 1e-10 * 1000 * 1001 / 2, 1e-12);
+    EXPECT_NEAR(st.centroid.x - 0.05, 0.5 * 0.01, 1e-12);
+}
+
+toml::table parse(const std::string& text)
+{
+    return toml::parse(text);
+}
+
+const char* kScene = R"(
+[simulation]
+type = "fdem2d"
+time_step = 1e-6
+end_time = 0.01
+gravity = [0.0, -9.81]
+[contact]
+normal_penalty = 1e10
+friction = 0.5
+[[material]]
+name = "rock"
+density = 2650.0
+youngs_modulus = 1e9
+poisson_ratio = 0.25
+[[body]]
+name = "block"
+material = "rock"
+velocity = [1.0, 0.0]
+rectangle = { origin = [0.0, 0.0], size = [0.05, 0.05], nx = 2, ny = 2 }
+)";
+
+TEST(Scene, ReadsAValidScene)
+{
+    const Scene s = readScene(parse(kScene), "test.toml");
+    ASSERT_EQ(s.bodies.size(), 1u);
+    EXPECT_EQ(s.bodies[0].mesh.triangles.size(), 8u);
+    EXPECT_EQ(s.bodies[0].velocity, (Vec2{1, 0}));
+    EXPECT_EQ(s.settings.contact.tangentialPenalty, 1e10); // defaults to the normal penalty
+}
+
+void expectError(const std::string& text, const std::string& fragment)
+{
+    try
+    {
+        readScene(parse(text), "test.toml");
+        FAIL() << "expected InputError containing '" << fragment << "'";
+    }
+    catch (const InputError& e)
+    {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(fragment), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
+TEST(Scene, BadInputGivesOneLineErrors)
+{
+    std::string s = kScene;
+    expectError(std::string(s).replace(s.find("friction"), 8, "frictoin"), "did you mean 'friction'");
+    expectError(std::string(s).replace(s.find("density = 2650.0"), 16, "density = -1.0"), "density");
+    expectError(std::string(s).replace(s.find("poisson_ratio = 0.25"), 20, "poisson_ratio = 0.6"),
+                "poisson_ratio");
+    expectError(std::string(s).replace(s.find("velocity = [1.0, 0.0]"), 21, "velocity = [1.0]"),
+                "2 finite numbers");
+    expectError(std::string(s).replace(s.find("nx = 2"), 6, "nx = 0"), "nx");
+    expectError(std::string(s).replace(s.find("material = \"rock\""), 17, "material = \"ice\""),
+                "unknown material");
+}
+
+TEST(Scene, ReadsAGmshMeshRelativeToTheSceneFile)
+{
+    std::string s = kScene;
+    s.replace(s.find("rectangle = {"), s.find('\n', s.find("rectangle = {")) - s.find("rectangle = {"),
+              "mesh = \"square_v41.msh\"");
+    const Scene scene = readScene(parse(s), std::string(VERIDEM_FDEM_TEST_DATA) + "/scene.toml");
+    ASSERT_EQ(scene.bodies.size(), 1u);
+    EXPECT_EQ(scene.bodies[0].mesh.triangles.size(), 4u);
+}
+
+TEST(Scene, ReadsAPolygonBodyAndRejectsTwoGeometries)
+{
+    std::string s = kScene;
+    const auto at = s.find("rectangle = {");
+    const auto end = s.find('\n', at);
+    std::string polygon = s;
+    polygon.replace(at, end - at, "polygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05], [0.0, 0.05]]");
+    const Scene scene = readScene(parse(polygon), "test.toml");
+    EXPECT_EQ(scene.bodies[0].mesh.triangles.size(), 2u);
+    std::string both = s;
+    both.insert(end, "\npolygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05]]");
+    expectError(both, "exactly one of");
+    std::string notTable = s;
+    notTable.replace(at, end - at, "rectangle = 5");
+    expectError(notTable, "rectangle");
+}
+
+TEST(SceneRunner, RefusesATimeStepAboveTheLimitAndRunsBelowIt)
+{
+    std::string s = kScene;
+    s.replace(s.find("time_step = 1e-6"), 16, "time_step = 1e-4");
+    const auto out = std::filesystem::temp_directory_path() / "veridem_fdem_runner_test";
+    try
+    {
+        runScene(parse(s), "test.toml", out, false, false);
+        FAIL() << "expected InputError";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("exceeds the stable limit"), std::string::npos) << e.what();
+    }
+    std::string ok = kScene;
+    ok.replace(ok.find("end_time = 0.01"), 15, "end_time = 1e-4");
+    EXPECT_EQ(runScene(parse(ok), "test.toml", out, false, false), 0);
+    EXPECT_TRUE(std::filesystem::exists(out / "series.pvd"));
+    EXPECT_TRUE(std::filesystem::exists(out / "bodies.csv"));
+    EXPECT_TRUE(std::filesystem::exists(out / "frame_00001.vtu"));
+    std::filesystem::remove_all(out);
+}
+
+} // namespace
+} // namespace veridem::fdem
