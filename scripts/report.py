@@ -129,8 +129,9 @@ def save(fig, out_dir, name):
 
 def compass(ax):
     """N/E/S/W marks around the paper's 0.4 m x 0.4 m frame."""
-    for label, x, y in (("N", 0.2, 0.415), ("S", 0.2, -0.02), ("E", 0.415, 0.2), ("W", -0.02, 0.2)):
-        ax.text(x, y, label, ha="center", va="center", fontsize=12, fontweight="bold")
+    for label, x, y in (("N", 0.2, 0.388), ("S", 0.2, 0.012), ("E", 0.388, 0.2), ("W", 0.012, 0.2)):
+        ax.text(x, y, label, ha="center", va="center", fontsize=12, fontweight="bold",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
 
 
 def turntable_figure(out_dir, case, header, data):

@@ -50,6 +50,7 @@ struct DishRun
 {
     std::vector<Real> time, x, y, h, hTheory, xTheory, yTheory, spin, spinTheory;
     Real slideEnd = -1;       // [s]
+    Real theorySlipTime = -1; // first time the rolling reference needs more friction than mu N [s]
     Real maxOverlapRatio = 0; // overlap / a
     Real hFinal = 0, rFinal = 0, hTheoryFinal = 0, spinFinal = 0, spinTheoryFinal = 0;
 };
@@ -124,7 +125,17 @@ DishRun runDish(const DishSetup& s, const CaseContext& context, const std::strin
                    const int steps = static_cast<int>(std::lround((w.time - theoryTime) / kTheoryStep));
                    const Real h = steps > 0 ? (w.time - theoryTime) / steps : 0;
                    for (int i = 0; i < steps; ++i)
+                   {
                        theoryState = theory.step(theoryState, h);
+                       // Friction demand of rigid rolling, F_t = m (dv/dt - g)_t against mu N.
+                       const DishState rate = theory.rate(theoryState);
+                       const Vec3 n = theoryState.x / length(theoryState.x);
+                       Vec3 demand = rate.v - w.gravity;
+                       demand -= dot(demand, n) * n;
+                       const Real normal = dot(theoryState.v, theoryState.v) / theory.rhoS - kG * n.z;
+                       if (run.theorySlipTime < 0 && length(demand) > dishBall().friction * normal)
+                           run.theorySlipTime = theoryTime + (i + 1) * h;
+                   }
                    theoryTime = w.time;
                    (void)substeps;
                }
@@ -174,6 +185,11 @@ CaseResult runDishCase(Real omega, Real releaseRadius, const CaseContext& contex
     CaseResult r;
     r.notes.push_back(format("dt = %.0e s (t_c/%.0f), %.0f s; slide ends at %.3f s; max overlap/a = %.3f",
                              kDishStep, 2.90e-3 / kDishStep, kDishDuration, run.slideEnd, run.maxOverlapRatio));
+    if (run.theorySlipTime >= 0)
+        r.notes.push_back(format("from t = %.1f s rigid rolling would need more friction than mu N: the DEM ball slides "
+                                 "again there, which the rolling reference cannot do, so the two paths part in time "
+                                 "(the end heights are compared with h_c*, not with the reference)",
+                                 run.theorySlipTime));
     if (omega > omegaCritical && releaseRadius <= bandRadius)
     {
         r.quantities.push_back(absoluteQuantity(
