@@ -308,7 +308,8 @@ def many_ball_figure(out_dir, case, name, header, data):
     ax.set_ylabel("y (m)")
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=7, loc="upper right", ncol=2)
-    ax.set_title(f"{case}: paths seen from above (o start, □ end)", fontsize=10)
+    frame = name.replace("trajectories", "").replace("_", " ").strip() or "lab frame"
+    ax.set_title(f"{case}: paths seen from above, {frame} (o start, □ end)", fontsize=10)
     return save(fig, out_dir, f"{case}_{name}")
 
 
