@@ -14,7 +14,10 @@ double Quantity::error() const
     return expected != 0 ? diff / std::abs(expected) : diff;
 }
 
-bool Quantity::passed() const { return std::isfinite(measured) && error() <= tolerance; }
+bool Quantity::passed() const
+{
+    return std::isfinite(measured) && error() <= tolerance;
+}
 
 bool CaseResult::passed() const
 {

@@ -15,46 +15,46 @@ namespace veridem::verify
 /// One compared number. The check is |measured - expected| <= tolerance * (relative ? |expected| : 1).
 struct Quantity
 {
-    std::string name;      // e.g. "v_final"
-    std::string unit;      // e.g. "m/s" ("" for dimensionless)
-    double expected = 0;   // from the formula
-    double measured = 0;   // from the simulation
-    double tolerance = 0;  // relative (fraction) or absolute (in `unit`)
-    bool relative = true;  // how `tolerance` is read
-    std::string why;       // where the tolerance comes from
+    std::string name;     // e.g. "v_final"
+    std::string unit;     // e.g. "m/s" ("" for dimensionless)
+    double expected = 0;  // from the formula
+    double measured = 0;  // from the simulation
+    double tolerance = 0; // relative (fraction) or absolute (in `unit`)
+    bool relative = true; // how `tolerance` is read
+    std::string why;      // where the tolerance comes from
 
-    double error() const;  // relative error if `relative`, else absolute error
+    double error() const; // relative error if `relative`, else absolute error
     bool passed() const;
 };
 
 /// A time series a case writes for the report (CSV with a header line).
 struct Series
 {
-    std::string name;                   // file stem, e.g. "t1b_trajectory"
-    std::vector<std::string> columns;   // header
+    std::string name;                 // file stem, e.g. "t1b_trajectory"
+    std::vector<std::string> columns; // header
     std::vector<std::vector<double>> rows;
 };
 
 struct CaseResult
 {
     std::vector<Quantity> quantities;
-    std::vector<std::string> notes;  // free-text findings printed under the table
-    std::vector<Series> series;      // written to <out>/<case>/<series>.csv when an output dir is set
-    double wallSeconds = 0;          // filled by the runner
+    std::vector<std::string> notes; // free-text findings printed under the table
+    std::vector<Series> series;     // written to <out>/<case>/<series>.csv when an output dir is set
+    double wallSeconds = 0;         // filled by the runner
     bool passed() const;
 };
 
 struct CaseContext
 {
-    bool showProgress = false;  // long cases print progress on stderr
+    bool showProgress = false; // long cases print progress on stderr
 };
 
 struct Case
 {
-    std::string name;       // unique, snake_case
-    std::string summary;    // one line
-    std::string reference;  // where the formula comes from
-    std::vector<std::string> labels;  // "quick" (CI), "paper", "dem", "fdem", "slow" ...
+    std::string name;                // unique, snake_case
+    std::string summary;             // one line
+    std::string reference;           // where the formula comes from
+    std::vector<std::string> labels; // "quick" (CI), "paper", "dem", "fdem", "slow" ...
     std::function<CaseResult(const CaseContext&)> run;
 };
 
@@ -78,6 +78,6 @@ Quantity absoluteQuantity(std::string name, std::string unit, double expected, d
 #define VERIDEM_CONCAT_INNER(a, b) a##b
 #define VERIDEM_CONCAT(a, b) VERIDEM_CONCAT_INNER(a, b)
 /// Registers a case at static-initialisation time: VERIDEM_CASE({.name = ..., .run = ...});
-#define VERIDEM_CASE(...)                                                                                   \
-    static const ::veridem::verify::Registrar VERIDEM_CONCAT(veridemCaseRegistrar_, __LINE__)(            \
-        ::veridem::verify::Case __VA_ARGS__)
+#define VERIDEM_CASE(...)                                                                                    \
+    static const ::veridem::verify::Registrar VERIDEM_CONCAT(veridemCaseRegistrar_,                          \
+                                                             __LINE__)(::veridem::verify::Case __VA_ARGS__)

@@ -186,8 +186,10 @@ int runCases(const RunRequest& request)
                 const auto& v = o.result.quantities[q];
                 out << (q ? "," : "") << "{\"name\":\"" << jsonEscape(v.name) << "\",\"unit\":\""
                     << jsonEscape(v.unit) << "\",\"expected\":" << jsonNumber(v.expected)
-                    << ",\"measured\":" << jsonNumber(v.measured) << ",\"tolerance\":" << jsonNumber(v.tolerance)
-                    << ",\"relative\":" << (v.relative ? "true" : "false") << ",\"error\":" << jsonNumber(v.error())
+                    << ",\"measured\":" << jsonNumber(v.measured)
+                    << ",\"tolerance\":" << jsonNumber(v.tolerance)
+                    << ",\"relative\":" << (v.relative ? "true" : "false")
+                    << ",\"error\":" << jsonNumber(v.error())
                     << ",\"passed\":" << (v.passed() ? "true" : "false") << ",\"why\":\"" << jsonEscape(v.why)
                     << "\"}";
             }

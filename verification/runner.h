@@ -13,10 +13,10 @@ namespace veridem::verify
 
 struct RunRequest
 {
-    std::vector<std::string> names;   // run these (exact names); empty = all matching labels
-    std::vector<std::string> labels;  // run cases having any of these labels; empty = all
+    std::vector<std::string> names;  // run these (exact names); empty = all matching labels
+    std::vector<std::string> labels; // run cases having any of these labels; empty = all
     std::optional<std::string> jsonPath;
-    std::optional<std::string> seriesDir;  // write <dir>/<case>/<series>.csv
+    std::optional<std::string> seriesDir; // write <dir>/<case>/<series>.csv
     bool showProgress = true;
 };
 

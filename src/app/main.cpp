@@ -34,8 +34,8 @@ int runCommand(const veridem::app::RunOptions& options)
         return veridem::fdem::runScene(scene, options.sceneFile, options.outDir, options.progress,
                                        options.allowUnstableTimeStep);
 #endif
-    throw veridem::InputError(options.sceneFile + ": [simulation] 'type' must be \"dem\" or \"fdem2d\" (got \"" +
-                              type + "\")");
+    throw veridem::InputError(options.sceneFile +
+                              ": [simulation] 'type' must be \"dem\" or \"fdem2d\" (got \"" + type + "\")");
 }
 
 } // namespace
@@ -48,7 +48,8 @@ int main(int argc, char** argv)
     veridem::app::RunOptions runOptions;
     std::string outDir = "out";
     bool quiet = false;
-    auto* run = app.add_subcommand("run", "Run a scene file; writes particles.csv and ParaView files to --out");
+    auto* run =
+        app.add_subcommand("run", "Run a scene file; writes particles.csv and ParaView files to --out");
     run->add_option("scene", runOptions.sceneFile, "TOML scene file (see docs/scene-format.md)")->required();
     run->add_option("--out", outDir, "output directory")->capture_default_str();
     run->add_flag("--quiet", quiet, "no progress output");
@@ -61,7 +62,8 @@ int main(int argc, char** argv)
     auto* verify = app.add_subcommand("verify", "Run verification cases against their analytical solutions");
     verify->add_flag("--list", list, "list the cases and exit");
     verify->add_option("--case", verifyRequest.names, "run only this case (repeatable)");
-    verify->add_option("--label", verifyRequest.labels, "run cases with this label, e.g. quick, paper (repeatable)");
+    verify->add_option("--label", verifyRequest.labels,
+                       "run cases with this label, e.g. quick, paper (repeatable)");
     verify->add_option("--json", jsonPath, "also write the results as JSON");
     verify->add_option("--report", reportDir, "write an HTML report with figures to this directory");
     verify->add_flag("--quiet", quiet, "no progress output");
@@ -97,7 +99,8 @@ int main(int argc, char** argv)
                                         reportDir + "\" \"" + *verifyRequest.jsonPath + "\"";
             if (std::system(command.c_str()) != 0)
             {
-                std::fprintf(stderr, "veridem: the report could not be drawn (command: %s)\n", command.c_str());
+                std::fprintf(stderr, "veridem: the report could not be drawn (command: %s)\n",
+                             command.c_str());
                 return code ? code : 1;
             }
         }

@@ -12,9 +12,9 @@ namespace veridem::app
 struct RunOptions
 {
     std::string sceneFile;
-    std::filesystem::path outDir;  // created if missing
-    bool progress = true;          // progress with ETA on stderr
-    bool allowUnstableTimeStep = false;  // --force-dt: run above the stability limit (warned)
+    std::filesystem::path outDir;       // created if missing
+    bool progress = true;               // progress with ETA on stderr
+    bool allowUnstableTimeStep = false; // --force-dt: run above the stability limit (warned)
 };
 
 /// 3D sphere DEM scene (type = "dem"). Returns the exit code.

@@ -34,7 +34,7 @@ void computePairForces(World& world, Real dt)
         const Real distance2 = lengthSquared(separation);
         if (distance2 >= touching * touching)
         {
-            list.history[k] = ContactHistory{};  // the contact opened: forget it
+            list.history[k] = ContactHistory{}; // the contact opened: forget it
             continue;
         }
         const Real distance = std::sqrt(distance2);
@@ -54,7 +54,7 @@ void computePairForces(World& world, Real dt)
         const PairParams& params = world.pairs(p.material[i], p.material[j]);
         const ContactOutput out = evaluateContact(params, in, list.history[k], dt);
 
-        const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce);  // n x Ft
+        const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
         p.force[i] += out.force;
         p.force[j] -= out.force;
         p.torque[i] += out.rollingTorque - leverI * tangentialTorque;
@@ -93,7 +93,7 @@ void computeWallForces(World& world, Real dt)
             ContactInput in;
             in.normal = gap.normal;
             in.overlap = gap.overlap;
-            const Vec3 arm = -r * gap.normal;  // centre to contact point
+            const Vec3 arm = -r * gap.normal; // centre to contact point
             // The particle's velocities are those of the half step t+dt/2, so the wall's surface
             // velocity is taken at the contact point of the half step too (x - v dt/2). Using
             // x(t+dt) would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball

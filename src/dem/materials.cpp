@@ -11,7 +11,10 @@ namespace veridem::dem
 
 namespace
 {
-Real seriesStiffness(Real a, Real b) { return (a + b) > 0 ? 2.0 * a * b / (a + b) : 0.0; }
+Real seriesStiffness(Real a, Real b)
+{
+    return (a + b) > 0 ? 2.0 * a * b / (a + b) : 0.0;
+}
 
 [[noreturn]] void bad(const Material& m, const std::string& what)
 {
@@ -67,7 +70,7 @@ PairParams mixMaterials(const Material& a, const Material& b)
     }
     const Real e = 0.5 * (a.restitution + b.restitution);
     p.dampingRatio = dampingRatioFromRestitution(e);
-    p.hertzBeta = p.dampingRatio;  // beta = -ln e / sqrt(ln^2 e + pi^2): the same expression
+    p.hertzBeta = p.dampingRatio; // beta = -ln e / sqrt(ln^2 e + pi^2): the same expression
     if (a.normalDampingRate >= 0 || b.normalDampingRate >= 0)
         p.dampingRate = 0.5 * (std::fmax(a.normalDampingRate, 0) + std::fmax(b.normalDampingRate, 0));
     const Real ratioA = a.tangentialDampingRatio, ratioB = b.tangentialDampingRatio;

@@ -19,38 +19,39 @@ namespace veridem::dem
 
 enum class NormalModel
 {
-    Linear,  // linear spring-dashpot
-    Hertz    // Hertz-Mindlin with restitution damping
+    Linear, // linear spring-dashpot
+    Hertz   // Hertz-Mindlin with restitution damping
 };
 
 enum class RollingModel
 {
     None,
-    ConstantTorque,  // type A, the paper's eq. 3
-    Epsd             // type C, elastic-plastic spring-dashpot
+    ConstantTorque, // type A, the paper's eq. 3
+    Epsd            // type C, elastic-plastic spring-dashpot
 };
 
 struct Material
 {
     std::string name;
-    Real density = 2500;  // [kg/m^3]
+    Real density = 2500; // [kg/m^3]
     NormalModel normalModel = NormalModel::Linear;
     // Linear model
-    Real normalStiffness = 1e5;                  // kn [N/m]
-    Real tangentialStiffnessRatio = 2.0 / 7.0;   // kt/kn [-] (2/7: equal normal and tangential periods)
+    Real normalStiffness = 1e5;                // kn [N/m]
+    Real tangentialStiffnessRatio = 2.0 / 7.0; // kt/kn [-] (2/7: equal normal and tangential periods)
     // Hertz model
-    Real youngsModulus = 0;  // E [Pa]
-    Real poissonRatio = 0;   // nu [-]
+    Real youngsModulus = 0; // E [Pa]
+    Real poissonRatio = 0;  // nu [-]
     // Damping
-    Real restitution = 0.8;         // e in (0, 1]
-    Real normalDampingRate = -1;    // gamma_n [1/s]: if >= 0, etaN = gamma_n m* (LAMMPS gran/hooke style) instead of e
-    Real tangentialDampingRatio = -1;  // etaT/etaN; < 0: sqrt((2/7) kt/kn), the same damping ratio
+    Real restitution = 0.8; // e in (0, 1]
+    Real normalDampingRate =
+        -1; // gamma_n [1/s]: if >= 0, etaN = gamma_n m* (LAMMPS gran/hooke style) instead of e
+    Real tangentialDampingRatio = -1; // etaT/etaN; < 0: sqrt((2/7) kt/kn), the same damping ratio
     // Friction
-    Real friction = 0.5;  // Coulomb mu [-]
+    Real friction = 0.5; // Coulomb mu [-]
     RollingModel rollingModel = RollingModel::None;
-    Real rollingFrictionLength = 0;          // muR as a length [m] (the paper's convention)
-    Real rollingFrictionDimensionless = 0;   // muR' [-]; contact value muR = muR' * R_r
-    Real rollingDampingRatio = 0.3;          // EPSD etaR [-]
+    Real rollingFrictionLength = 0;        // muR as a length [m] (the paper's convention)
+    Real rollingFrictionDimensionless = 0; // muR' [-]; contact value muR = muR' * R_r
+    Real rollingDampingRatio = 0.3;        // EPSD etaR [-]
     // Which relative rotation the rolling torque opposes. true (default): all of
     // w_rel = w_i - w_partner, twist about the contact normal included. A ball moving over a curved
     // moving wall acquires spin about the normal from the geometry alone; if nothing resists that
@@ -65,15 +66,15 @@ struct Material
 struct PairParams
 {
     NormalModel normalModel = NormalModel::Linear;
-    Real kn = 0;                  // [N/m] (linear)
-    Real ktRatio = 0;             // kt/kn [-] (linear and Hertz: kt = ratio * kn for linear)
-    Real effectiveModulus = 0;    // E* [Pa] (Hertz)
+    Real kn = 0;                     // [N/m] (linear)
+    Real ktRatio = 0;                // kt/kn [-] (linear and Hertz: kt = ratio * kn for linear)
+    Real effectiveModulus = 0;       // E* [Pa] (Hertz)
     Real effectiveShearModulus = 0;  // G* [Pa] (Hertz-Mindlin kt = 8 G* sqrt(R* delta))
-    Real dampingRatio = 0;        // zeta from e (linear) [-]
-    Real hertzBeta = 0;           // beta from e (Hertz) [-]
-    Real dampingRate = -1;        // gamma_n [1/s] if >= 0
-    Real tangentialDampingRatio = 0;  // etaT / etaN [-]
-    Real mu = 0;                  // [-]
+    Real dampingRatio = 0;           // zeta from e (linear) [-]
+    Real hertzBeta = 0;              // beta from e (Hertz) [-]
+    Real dampingRate = -1;           // gamma_n [1/s] if >= 0
+    Real tangentialDampingRatio = 0; // etaT / etaN [-]
+    Real mu = 0;                     // [-]
     RollingModel rollingModel = RollingModel::None;
     Real rollingLength = 0;        // [m]
     Real rollingDimensionless = 0; // [-]

@@ -49,7 +49,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
     const std::size_t maxCells = 4 * n + 64;
     while (cellsAlong(hi.x - lo.x) * cellsAlong(hi.y - lo.y) * cellsAlong(hi.z - lo.z) > maxCells)
         cell *= 1.5;
-    const std::size_t nx = cellsAlong(hi.x - lo.x), ny = cellsAlong(hi.y - lo.y), nz = cellsAlong(hi.z - lo.z);
+    const std::size_t nx = cellsAlong(hi.x - lo.x), ny = cellsAlong(hi.y - lo.y),
+                      nz = cellsAlong(hi.z - lo.z);
     const std::size_t cellCount = nx * ny * nz;
     auto coordinate = [&](Real value, Real origin, std::size_t count)
     { return std::min(static_cast<std::size_t>((value - origin) / cell), count - 1); };
@@ -60,8 +61,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
     for (std::size_t i = 0; i < n; ++i)
     {
         const Vec3& x = particles.position[i];
-        const std::size_t c = (coordinate(x.z, lo.z, nz) * ny + coordinate(x.y, lo.y, ny)) * nx +
-                              coordinate(x.x, lo.x, nx);
+        const std::size_t c =
+            (coordinate(x.z, lo.z, nz) * ny + coordinate(x.y, lo.y, ny)) * nx + coordinate(x.x, lo.x, nx);
         cellOf_[i] = static_cast<std::uint32_t>(c);
         ++cellStart_[c + 1];
     }

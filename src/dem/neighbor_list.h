@@ -23,7 +23,7 @@ namespace veridem::dem
 class NeighborList
 {
   public:
-    Real skin = 0;  // extra search distance beyond touching [m]
+    Real skin = 0; // extra search distance beyond touching [m]
 
     std::vector<std::uint32_t> first;    // i of each pair (sorted, i < j)
     std::vector<std::uint32_t> second;   // j of each pair

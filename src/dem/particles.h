@@ -14,15 +14,15 @@ namespace veridem::dem
 
 struct ParticleStore
 {
-    std::vector<Vec3> position;         // x [m]
-    std::vector<Vec3> velocity;         // v [m/s]
-    std::vector<Vec3> angularVelocity;  // w [rad/s]
-    std::vector<Vec3> force;            // contact force of the current step [N] (gravity excluded)
-    std::vector<Vec3> torque;           // contact torque of the current step [N m]
-    std::vector<Real> radius;           // [m]
-    std::vector<Real> mass;             // [kg]
-    std::vector<Real> invMass;          // [1/kg]
-    std::vector<Real> invInertia;       // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
+    std::vector<Vec3> position;        // x [m]
+    std::vector<Vec3> velocity;        // v [m/s]
+    std::vector<Vec3> angularVelocity; // w [rad/s]
+    std::vector<Vec3> force;           // contact force of the current step [N] (gravity excluded)
+    std::vector<Vec3> torque;          // contact torque of the current step [N m]
+    std::vector<Real> radius;          // [m]
+    std::vector<Real> mass;            // [kg]
+    std::vector<Real> invMass;         // [1/kg]
+    std::vector<Real> invInertia;      // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
     std::vector<std::uint32_t> material;
 
     std::size_t size() const { return position.size(); }

@@ -31,20 +31,23 @@ Limit contactLimit(const PairParams& params, Real effectiveMass, Real effectiveR
                                            (16.0 * params.effectiveModulus * std::sqrt(effectiveRadius)),
                                        0.4);
         kn = hertzNormalStiffness(params.effectiveModulus, effectiveRadius, deltaMax);
-        contactTime = 2.868 * std::pow(effectiveMass * effectiveMass /
-                                           (effectiveRadius * params.effectiveModulus * params.effectiveModulus * v),
-                                       0.2);
+        contactTime =
+            2.868 * std::pow(effectiveMass * effectiveMass /
+                                 (effectiveRadius * params.effectiveModulus * params.effectiveModulus * v),
+                             0.2);
     }
     const ContactCoefficients c = contactCoefficients(params, 0, effectiveMass, effectiveRadius);
-    const Real etaN = params.normalModel == NormalModel::Linear
-                          ? c.etaN
-                          : (params.dampingRate >= 0 ? params.dampingRate * effectiveMass
-                                                     : hertzDampingCoefficient(params.hertzBeta, kn, effectiveMass));
+    const Real etaN =
+        params.normalModel == NormalModel::Linear
+            ? c.etaN
+            : (params.dampingRate >= 0 ? params.dampingRate * effectiveMass
+                                       : hertzDampingCoefficient(params.hertzBeta, kn, effectiveMass));
     const Real omegaN = std::sqrt(kn / effectiveMass);
     const Real zeta = std::fmin(etaN / (2.0 * std::sqrt(effectiveMass * kn)), 0.999);
     if (params.normalModel == NormalModel::Linear)
         contactTime = kPi / (omegaN * std::sqrt(1 - zeta * zeta));
-    const Real kt = params.normalModel == NormalModel::Linear ? params.ktRatio * kn : kn;  // Hertz-Mindlin kt ~ kn
+    const Real kt =
+        params.normalModel == NormalModel::Linear ? params.ktRatio * kn : kn; // Hertz-Mindlin kt ~ kn
     Real omegaMax = std::fmax(omegaN, std::sqrt(kt / ((2.0 / 7.0) * effectiveMass)));
     if (params.rollingModel == RollingModel::Epsd)
     {
@@ -61,13 +64,14 @@ TimeStepEstimate estimateTimeStep(const World& world, Real characteristicSpeed)
     const ParticleStore& p = world.particles;
     const std::size_t materialCount = world.materials.size();
     const Real inf = std::numeric_limits<Real>::infinity();
-    std::vector<Real> minMass(materialCount, inf), minRadius(materialCount, inf), minInertia(materialCount, inf);
+    std::vector<Real> minMass(materialCount, inf), minRadius(materialCount, inf),
+        minInertia(materialCount, inf);
     for (std::size_t i = 0; i < p.size(); ++i)
     {
         const auto m = p.material[i];
         minMass[m] = std::fmin(minMass[m], p.mass[i]);
         minRadius[m] = std::fmin(minRadius[m], p.radius[i]);
-        minInertia[m] = std::fmin(minInertia[m], 1.0 / p.invInertia[i]);  // twist: I alone
+        minInertia[m] = std::fmin(minInertia[m], 1.0 / p.invInertia[i]); // twist: I alone
     }
     PairTable table;
     table.build(world.materials);

@@ -20,10 +20,10 @@ namespace veridem::dem
 
 struct TimeStepEstimate
 {
-    Real critical = 0;        // stability limit [s]
-    Real contactTime = 0;     // shortest contact duration tc [s]
-    Real recommended = 0;     // tc / 50 [s]
-    std::string limitedBy;    // which contact sets the limit, for messages
+    Real critical = 0;     // stability limit [s]
+    Real contactTime = 0;  // shortest contact duration tc [s]
+    Real recommended = 0;  // tc / 50 [s]
+    std::string limitedBy; // which contact sets the limit, for messages
 };
 
 /// characteristicSpeed [m/s]: impact speed used to size Hertz stiffness (ignored for linear).

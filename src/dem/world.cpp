@@ -62,12 +62,12 @@ void step(World& world, Real dt)
     if (!world.prepared)
         prepare(world);
 
-    kickDrift(world.particles, world.gravity, dt);                // v(t+dt/2), x(t+dt)
-    moveWalls(world.walls, dt);                                   // wall motion to t+dt
-    if (world.neighbors.needsRebuild(world.particles))            // Verlet list + history merge
+    kickDrift(world.particles, world.gravity, dt);     // v(t+dt/2), x(t+dt)
+    moveWalls(world.walls, dt);                        // wall motion to t+dt
+    if (world.neighbors.needsRebuild(world.particles)) // Verlet list + history merge
         world.neighbors.rebuild(world.particles);
-    computeForces(world, dt);                                     // contact forces at t+dt
-    kick(world.particles, world.gravity, dt, world.health);       // v(t+dt)
+    computeForces(world, dt);                               // contact forces at t+dt
+    kick(world.particles, world.gravity, dt, world.health); // v(t+dt)
 
     world.time += dt;
     ++world.stepCount;

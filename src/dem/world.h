@@ -17,16 +17,16 @@ namespace veridem::dem
 /// Health of the last force evaluation, checked by the driver after each step.
 struct StepHealth
 {
-    Real maxOverlapRatio = 0;            // max over contacts of overlap / smaller radius [-]
-    std::uint32_t worstParticle = 0;     // particle with that overlap
-    bool finite = true;                  // all positions and velocities finite
-    std::uint32_t firstNonFinite = 0;    // first particle that is not
+    Real maxOverlapRatio = 0;         // max over contacts of overlap / smaller radius [-]
+    std::uint32_t worstParticle = 0;  // particle with that overlap
+    bool finite = true;               // all positions and velocities finite
+    std::uint32_t firstNonFinite = 0; // first particle that is not
 };
 
 /// Wall-contact history: one slot per (particle, wall), dense (walls are few).
 struct WallContacts
 {
-    std::vector<ContactHistory> history;  // index particle * wallCount + wall
+    std::vector<ContactHistory> history; // index particle * wallCount + wall
 };
 
 struct World
@@ -37,15 +37,15 @@ struct World
     PairTable pairs;
     NeighborList neighbors;
     WallContacts wallContacts;
-    Vec3 gravity{0, 0, -9.81};  // [m/s^2]
-    Real time = 0;              // [s]
+    Vec3 gravity{0, 0, -9.81}; // [m/s^2]
+    Real time = 0;             // [s]
     std::uint64_t stepCount = 0;
     StepHealth health;
     bool prepared = false;
 
     /// Adds a material; returns its id.
     std::uint32_t addMaterial(const Material& m);
-    std::uint32_t materialId(const std::string& name) const;  // throws InputError if unknown
+    std::uint32_t materialId(const std::string& name) const; // throws InputError if unknown
 };
 
 /// Mixes the pair table, builds the neighbour list and computes the initial forces. Called by the

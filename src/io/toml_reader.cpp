@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace veridem::io
@@ -15,16 +16,37 @@ const char* typeName(const toml::node& n)
 {
     switch (n.type())
     {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    default: return "a date/time";
+    case toml::node_type::string:
+        return "a string";
+    case toml::node_type::integer:
+        return "an integer";
+    case toml::node_type::floating_point:
+        return "a number";
+    case toml::node_type::boolean:
+        return "a boolean";
+    case toml::node_type::array:
+        return "an array";
+    case toml::node_type::table:
+        return "a table";
+    default:
+        return "a date/time";
     }
 }
 } // namespace
+
+std::string TableReader::missingKeyMessage(std::string_view key) const
+{
+    std::ostringstream s;
+    s << location(nullptr) << ": " << where_ << ": missing required key '" << key << "'";
+    for (const auto& [present, value] : *table_)
+        if (present.str() != key &&
+            editDistance(present.str(), key) <= std::max<std::size_t>(2, key.size() / 3))
+        {
+            s << " (line " << value.source().begin.line << " has '" << present.str() << "': a typo?)";
+            break;
+        }
+    return s.str();
+}
 
 std::size_t editDistance(std::string_view a, std::string_view b)
 {
@@ -46,6 +68,8 @@ std::size_t editDistance(std::string_view a, std::string_view b)
 
 toml::table parseFile(const std::string& path)
 {
+    if (!std::filesystem::is_regular_file(path))
+        throw InputError(path + ": no such scene file");
     try
     {
         return toml::parse_file(path);
@@ -76,7 +100,10 @@ std::string TableReader::location(const toml::node* n) const
     return s.str();
 }
 
-bool TableReader::has(std::string_view key) const { return table_->contains(key); }
+bool TableReader::has(std::string_view key) const
+{
+    return table_->contains(key);
+}
 
 const toml::node* TableReader::node(std::string_view key)
 {
@@ -135,9 +162,7 @@ Real TableReader::requiredNumber(std::string_view key)
 {
     if (auto v = optionalNumber(key))
         return *v;
-    std::ostringstream s;
-    s << location(nullptr) << ": " << where_ << ": missing required key '" << key << "'";
-    throw InputError(s.str());
+    throw InputError(missingKeyMessage(key));
 }
 
 std::int64_t TableReader::integer(std::string_view key, std::int64_t defaultValue)
@@ -174,9 +199,7 @@ std::string TableReader::requiredString(std::string_view key)
 {
     if (!has(key))
     {
-        std::ostringstream s;
-        s << location(nullptr) << ": " << where_ << ": missing required key '" << key << "'";
-        throw InputError(s.str());
+        throw InputError(missingKeyMessage(key));
     }
     return string(key, "");
 }
@@ -216,15 +239,16 @@ std::optional<Vec3> TableReader::optionalVec3(std::string_view key)
     return Vec3{c[0], c[1], c[2]};
 }
 
-Vec3 TableReader::vec3(std::string_view key, Vec3 defaultValue) { return optionalVec3(key).value_or(defaultValue); }
+Vec3 TableReader::vec3(std::string_view key, Vec3 defaultValue)
+{
+    return optionalVec3(key).value_or(defaultValue);
+}
 
 Vec3 TableReader::requiredVec3(std::string_view key)
 {
     if (auto v = optionalVec3(key))
         return *v;
-    std::ostringstream s;
-    s << location(nullptr) << ": " << where_ << ": missing required key '" << key << "'";
-    throw InputError(s.str());
+    throw InputError(missingKeyMessage(key));
 }
 
 std::optional<TableReader> TableReader::table(std::string_view key)
@@ -248,7 +272,8 @@ std::vector<TableReader> TableReader::arrayOfTables(std::string_view key)
         fail(key, "must be written as [[" + std::string(key) + "]] tables");
     std::size_t index = 0;
     for (const auto& element : *a)
-        out.emplace_back(*element.as_table(), "[[" + std::string(key) + "]] #" + std::to_string(++index), file_);
+        out.emplace_back(*element.as_table(), "[[" + std::string(key) + "]] #" + std::to_string(++index),
+                         file_);
     return out;
 }
 

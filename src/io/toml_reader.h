@@ -55,6 +55,7 @@ class TableReader
     const std::string& where() const { return where_; }
 
   private:
+    std::string missingKeyMessage(std::string_view key) const;
     std::string location(const toml::node* node) const;
     const toml::node* node(std::string_view key);
 

@@ -23,7 +23,7 @@ CaseResult run(const CaseContext& context)
     const Real m = sphereMass(steel.density, a);
     const Real restingOverlap = m * kG / steel.normalStiffness;
     world.particles.add({0, 0, a - restingOverlap}, {v0, 0, 0}, {}, a, steel.density, 0);
-    const Real dt = 1e-5;  // tc / 91 for k = 1e5
+    const Real dt = 1e-5; // tc / 91 for k = 1e5
 
     Real tStar = -1, previousSlip = v0, previousT = 0;
     runFor(world, 0.5, dt, context, "bowling_ball",
@@ -40,11 +40,12 @@ CaseResult run(const CaseContext& context)
     CaseResult r;
     r.quantities.push_back(relativeQuantity("v_final", "m/s", 5.0 / 7.0 * v0, vFinal, 1e-6,
                                             "angular momentum about the contact point is conserved exactly"));
-    r.quantities.push_back(relativeQuantity("t*", "s", 2 * v0 / (7 * mu * kG), tStar, 5e-3,
-                                            "BENCHMARKS 5 #2, 0.5 %: the tangential spring loads over O(tc)"));
-    r.quantities.push_back(relativeQuantity("energy lost / E0", "", 2.0 / 7.0,
-                                            (energy0 - dem::kineticEnergy(world)) / energy0, 5e-3,
-                                            "BENCHMARKS 5 #2; includes the resting contact's tiny elastic energy"));
+    r.quantities.push_back(
+        relativeQuantity("t*", "s", 2 * v0 / (7 * mu * kG), tStar, 5e-3,
+                         "BENCHMARKS 5 #2, 0.5 %: the tangential spring loads over O(tc)"));
+    r.quantities.push_back(
+        relativeQuantity("energy lost / E0", "", 2.0 / 7.0, (energy0 - dem::kineticEnergy(world)) / energy0,
+                         5e-3, "BENCHMARKS 5 #2; includes the resting contact's tiny elastic energy"));
     return r;
 }
 } // namespace

@@ -32,14 +32,13 @@ namespace veridem::verify
 namespace
 {
 
-constexpr Real kDishStep = 5e-5;       // [s]
-constexpr Real kDishDuration = 600;    // [s]
-constexpr Real kDishSample = 0.1;      // [s]
-constexpr Real kFinalWindow = 20;      // [s]
-constexpr Real kTheoryStep = 1e-3;     // [s]
+constexpr Real kDishStep = 5e-5;    // [s]
+constexpr Real kDishDuration = 600; // [s]
+constexpr Real kDishSample = 0.1;   // [s]
+constexpr Real kFinalWindow = 20;   // [s]
+constexpr Real kTheoryStep = 1e-3;  // [s]
 
-template <typename... Args>
-std::string format(const char* fmt, Args... args)
+template <typename... Args> std::string format(const char* fmt, Args... args)
 {
     char buffer[320];
     std::snprintf(buffer, sizeof buffer, fmt, static_cast<double>(args)...);
@@ -103,7 +102,7 @@ DishRun runDish(const DishSetup& s, const CaseContext& context, const std::strin
                {
                    const Vec3& p = w.particles.position[0];
                    const Vec3 n = (p - centre) / length(p - centre);
-                   const Vec3 contact = p + a * n;  // the engine's contact point (undeformed radius)
+                   const Vec3 contact = p + a * n; // the engine's contact point (undeformed radius)
                    const Vec3 slip = w.particles.velocity[0] + cross(w.particles.angularVelocity[0], a * n) -
                                      dem::wallSurfaceVelocity(w.walls[0], contact);
                    // The engine takes the wall velocity at the half-step contact point, so a rolling
@@ -113,7 +112,8 @@ DishRun runDish(const DishSetup& s, const CaseContext& context, const std::strin
                        theoryStarted = true;
                        run.slideEnd = w.time;
                        const Vec3 v = w.particles.velocity[0];
-                       theoryState = {theory.rhoS * n, v - dot(v, n) * n, dot(w.particles.angularVelocity[0], n)};
+                       theoryState = {theory.rhoS * n, v - dot(v, n) * n,
+                                      dot(w.particles.angularVelocity[0], n)};
                        theoryTime = w.time;
                    }
                }
@@ -161,10 +161,11 @@ DishRun runDish(const DishSetup& s, const CaseContext& context, const std::strin
 
 Series trajectorySeries(const DishRun& run)
 {
-    Series s{"trajectory", {"t", "x", "y", "h", "x_theory", "y_theory", "h_theory", "spin", "spin_theory"}, {}};
+    Series s{
+        "trajectory", {"t", "x", "y", "h", "x_theory", "y_theory", "h_theory", "spin", "spin_theory"}, {}};
     for (std::size_t i = 0; i < run.time.size(); i += 2)
-        s.rows.push_back({run.time[i], run.x[i], run.y[i], run.h[i], run.xTheory[i], run.yTheory[i], run.hTheory[i],
-                          run.spin[i], run.spinTheory[i]});
+        s.rows.push_back({run.time[i], run.x[i], run.y[i], run.h[i], run.xTheory[i], run.yTheory[i],
+                          run.hTheory[i], run.spin[i], run.spinTheory[i]});
     return s;
 }
 
@@ -184,23 +185,27 @@ CaseResult runDishCase(Real omega, Real releaseRadius, const CaseContext& contex
 
     CaseResult r;
     r.notes.push_back(format("dt = %.0e s (t_c/%.0f), %.0f s; slide ends at %.3f s; max overlap/a = %.3f",
-                             kDishStep, 2.90e-3 / kDishStep, kDishDuration, run.slideEnd, run.maxOverlapRatio));
+                             kDishStep, 2.90e-3 / kDishStep, kDishDuration, run.slideEnd,
+                             run.maxOverlapRatio));
     if (run.theorySlipTime >= 0)
-        r.notes.push_back(format("from t = %.1f s rigid rolling would need more friction than mu N: the DEM ball slides "
-                                 "again there, which the rolling reference cannot do, so the two paths part in time "
-                                 "(the end heights are compared with h_c*, not with the reference)",
-                                 run.theorySlipTime));
+        r.notes.push_back(
+            format("from t = %.1f s rigid rolling would need more friction than mu N: the DEM ball slides "
+                   "again there, which the rolling reference cannot do, so the two paths part in time "
+                   "(the end heights are compared with h_c*, not with the reference)",
+                   run.theorySlipTime));
     if (omega > omegaCritical && releaseRadius <= bandRadius)
     {
         r.quantities.push_back(absoluteQuantity(
             "r_final", "m", 0, run.rFinal, bandRadius,
-            format("released at r0 = %.2f m inside the bottom's rolling-resistance band r_b = rho_s muR' / "
-                   "(Omega^2 rho_s / g - 1) = %.3f m: the outward drive never exceeds the rolling resistance, "
-                   "so the ball stays within r_b (spec 1c's climb to h_c* assumes r0 > r_b)",
-                   releaseRadius, bandRadius)));
-        r.notes.push_back(format("r_final = %.4f m, h_final = %.4f m (h_c* = %.4f m is not reached); reference "
-                                 "integrator h(600 s) = %.4f m",
-                                 run.rFinal, run.hFinal, hStar, run.hTheoryFinal));
+            format(
+                "released at r0 = %.2f m inside the bottom's rolling-resistance band r_b = rho_s muR' / "
+                "(Omega^2 rho_s / g - 1) = %.3f m: the outward drive never exceeds the rolling resistance, "
+                "so the ball stays within r_b (spec 1c's climb to h_c* assumes r0 > r_b)",
+                releaseRadius, bandRadius)));
+        r.notes.push_back(
+            format("r_final = %.4f m, h_final = %.4f m (h_c* = %.4f m is not reached); reference "
+                   "integrator h(600 s) = %.4f m",
+                   run.rFinal, run.hFinal, hStar, run.hTheoryFinal));
     }
     else if (omega > omegaCritical)
     {
@@ -214,29 +219,35 @@ CaseResult runDishCase(Real omega, Real releaseRadius, const CaseContext& contex
                 enter = run.time[i];
                 break;
             }
-        r.quantities.push_back(absoluteQuantity(
-            "h_final - (h_c* - dh/2)", "m", 0, run.hFinal - 0.5 * (low + high), 0.5 * (high - low),
-            format("spec 1c: h_final in [h_c* - dh - 0.05, h_c* + 0.05] = [%.3f, %.3f] m, with h_c* = %.4f m and the "
-                   "rolling-resistance band dh = %.3f m",
-                   low, high, hStar, band)));
-        r.notes.push_back(format("h_final = %.4f m vs h_c* = %.4f m (error %.4f m = %.2f %%); paper eq. 5 h* = %.4f m",
-                                 run.hFinal, hStar, run.hFinal - hStar, 100 * (run.hFinal - hStar) / hStar, hPaper));
-        r.notes.push_back(format("enters the band |h - h_c*| <= %.3f m at %.1f s; reference integrator h(600 s) = %.4f m",
-                                 band, enter, run.hTheoryFinal));
+        r.quantities.push_back(absoluteQuantity("h_final - (h_c* - dh/2)", "m", 0,
+                                                run.hFinal - 0.5 * (low + high), 0.5 * (high - low),
+                                                format("spec 1c: h_final in [h_c* - dh - 0.05, h_c* + 0.05] "
+                                                       "= [%.3f, %.3f] m, with h_c* = %.4f m and the "
+                                                       "rolling-resistance band dh = %.3f m",
+                                                       low, high, hStar, band)));
+        r.notes.push_back(
+            format("h_final = %.4f m vs h_c* = %.4f m (error %.4f m = %.2f %%); paper eq. 5 h* = %.4f m",
+                   run.hFinal, hStar, run.hFinal - hStar, 100 * (run.hFinal - hStar) / hStar, hPaper));
+        r.notes.push_back(
+            format("enters the band |h - h_c*| <= %.3f m at %.1f s; reference integrator h(600 s) = %.4f m",
+                   band, enter, run.hTheoryFinal));
     }
     else
     {
-        r.quantities.push_back(absoluteQuantity("r_final", "m", 0, run.rFinal, bandRadius,
-                                                "spec 1c: below Omega_c the ball ends inside r_band = rho_s muR' / "
-                                                "(1 - Omega^2 rho_s / g)"));
-        r.quantities.push_back(absoluteQuantity("h_final", "m", 0, run.hFinal, 0.02, "spec 1c: h_final <= 0.02 m"));
-        r.notes.push_back(format("r_final = %.4f m (r_band = %.3f m); reference integrator h(600 s) = %.4f m", run.rFinal,
-                                 bandRadius, run.hTheoryFinal));
+        r.quantities.push_back(
+            absoluteQuantity("r_final", "m", 0, run.rFinal, bandRadius,
+                             "spec 1c: below Omega_c the ball ends inside r_band = rho_s muR' / "
+                             "(1 - Omega^2 rho_s / g)"));
+        r.quantities.push_back(
+            absoluteQuantity("h_final", "m", 0, run.hFinal, 0.02, "spec 1c: h_final <= 0.02 m"));
+        r.notes.push_back(format("r_final = %.4f m (r_band = %.3f m); reference integrator h(600 s) = %.4f m",
+                                 run.rFinal, bandRadius, run.hTheoryFinal));
     }
     r.series.push_back(trajectorySeries(run));
-    r.series.push_back(Series{"dish_final",
-                              {"omega", "h_final", "h_c_star", "h_paper", "r_final", "h_theory_final", "r_release"},
-                              {{omega, run.hFinal, hStar, hPaper, run.rFinal, run.hTheoryFinal, releaseRadius}}});
+    r.series.push_back(
+        Series{"dish_final",
+               {"omega", "h_final", "h_c_star", "h_paper", "r_final", "h_theory_final", "r_release"},
+               {{omega, run.hFinal, hStar, hPaper, run.rFinal, run.hTheoryFinal, releaseRadius}}});
     return r;
 }
 
@@ -249,35 +260,38 @@ CaseResult runTwistRegression(const CaseContext& context)
     const Real cosTheta = kG / (omega * omega * rhoS);
     const Real band = rhoS * muRPrime / std::sqrt(1 - cosTheta * cosTheta);
     CaseResult r;
+    r.quantities.push_back(
+        absoluteQuantity("h_final without twist resistance", "m", run.hTheoryFinal, run.hFinal, 0.3,
+                         "vs the reference integrator with the same torque (no twist); 0.3 m keeps the lock "
+                         "(2.5 m below h_c*) "
+                         "distinct from the correct height while allowing for the non-smooth type-A torque"));
     r.quantities.push_back(absoluteQuantity(
-        "h_final without twist resistance", "m", run.hTheoryFinal, run.hFinal, 0.3,
-        "vs the reference integrator with the same torque (no twist); 0.3 m keeps the lock (2.5 m below h_c*) "
-        "distinct from the correct height while allowing for the non-smooth type-A torque"));
-    r.quantities.push_back(absoluteQuantity("h_final below the spec-1c band", "m", 0,
-                                            std::max(0.0, run.hFinal - (hStar - band - 0.05)), 0,
-                                            "the spurious lock must stay outside the pass band of the default model"));
-    r.notes.push_back(format("h_c* = %.4f m; locks at %.4f m (BENCHMARKS: 5.39 m); spin about the normal at 600 s: "
-                             "DEM %.0f rad/s, reference %.0f rad/s (BENCHMARKS: ~2000 rad/s)",
-                             hStar, run.hFinal, run.spinFinal, run.spinTheoryFinal));
+        "h_final below the spec-1c band", "m", 0, std::max(0.0, run.hFinal - (hStar - band - 0.05)), 0,
+        "the spurious lock must stay outside the pass band of the default model"));
+    r.notes.push_back(
+        format("h_c* = %.4f m; locks at %.4f m (BENCHMARKS: 5.39 m); spin about the normal at 600 s: "
+               "DEM %.0f rad/s, reference %.0f rad/s (BENCHMARKS: ~2000 rad/s)",
+               hStar, run.hFinal, run.spinFinal, run.spinTheoryFinal));
     r.series.push_back(trajectorySeries(run));
     return r;
 }
 
 } // namespace
 
-#define VERIDEM_DISH_CASE(caseName, omega, release, labelList, text)                                                   \
-    VERIDEM_CASE({.name = caseName,                                                                           \
-                  .summary = text,                                                                            \
-                  .reference = "Xiang et al. eqs. 5-6, Figs. 10-12; BENCHMARKS 1c",                           \
-                  .labels = labelList,                                                                        \
+#define VERIDEM_DISH_CASE(caseName, omega, release, labelList, text)                                         \
+    VERIDEM_CASE({.name = caseName,                                                                          \
+                  .summary = text,                                                                           \
+                  .reference = "Xiang et al. eqs. 5-6, Figs. 10-12; BENCHMARKS 1c",                          \
+                  .labels = labelList,                                                                       \
                   .run = [](const CaseContext& c) { return runDishCase(omega, release, c, caseName); }})
 
 VERIDEM_DISH_CASE("dish_omega_0p5", 0.5, 1.0, (std::vector<std::string>{"dem", "paper"}),
                   "concave dish at 0.5 rad/s (< Omega_c): ball ends near the bottom (Fig. 10)");
 VERIDEM_DISH_CASE("dish_omega_0p6", 0.6, 1.0, (std::vector<std::string>{"dem", "paper"}),
                   "concave dish at 0.6 rad/s (< Omega_c): ball ends near the bottom");
-VERIDEM_DISH_CASE("dish_omega_0p8", 0.8, 1.0, (std::vector<std::string>{"dem", "paper"}),
-                  "concave dish at 0.8 rad/s, r0 = 1 m inside the bottom's rolling-resistance band: stays near the bottom");
+VERIDEM_DISH_CASE(
+    "dish_omega_0p8", 0.8, 1.0, (std::vector<std::string>{"dem", "paper"}),
+    "concave dish at 0.8 rad/s, r0 = 1 m inside the bottom's rolling-resistance band: stays near the bottom");
 VERIDEM_DISH_CASE("dish_omega_0p8_release_2", 0.8, 2.0, (std::vector<std::string>{"dem", "paper"}),
                   "concave dish at 0.8 rad/s released at 2 m, outside the bottom's band: climbs to h_c*");
 VERIDEM_DISH_CASE("dish_omega_0p9", 0.9, 1.0, (std::vector<std::string>{"dem", "paper"}),
@@ -297,10 +311,11 @@ VERIDEM_DISH_CASE("dish_omega_7", 7.0, 1.0, (std::vector<std::string>{"dem", "pa
 VERIDEM_DISH_CASE("dish_omega_10", 10.0, 1.0, (std::vector<std::string>{"dem", "paper"}),
                   "concave dish at 10 rad/s: ball climbs to h_c* near the rim");
 
-VERIDEM_CASE({.name = "dish_twist_regression",
-              .summary = "rolling torque without twist resistance locks the dish ball at a wrong height (0.9 rad/s)",
-              .reference = "BENCHMARKS 1c consequence (i)",
-              .labels = {"dem", "paper"},
-              .run = runTwistRegression});
+VERIDEM_CASE(
+    {.name = "dish_twist_regression",
+     .summary = "rolling torque without twist resistance locks the dish ball at a wrong height (0.9 rad/s)",
+     .reference = "BENCHMARKS 1c consequence (i)",
+     .labels = {"dem", "paper"},
+     .run = runTwistRegression});
 
 } // namespace veridem::verify

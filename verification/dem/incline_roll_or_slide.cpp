@@ -26,8 +26,8 @@ CaseResult run(const CaseContext& context)
         World world = worldWith(steel, {kG * std::sin(theta), 0, -kG * std::cos(theta)});
         world.walls.push_back(floorWall());
         const Real m = sphereMass(steel.density, a);
-        world.particles.add({0, 0, a - m * kG * std::cos(theta) / steel.normalStiffness}, {}, {}, a, steel.density,
-                            0);
+        world.particles.add({0, 0, a - m * kG * std::cos(theta) / steel.normalStiffness}, {}, {}, a,
+                            steel.density, 0);
         std::vector<Real> t, v;
         runFor(world, 0.5, 1e-5, context, "incline_roll_or_slide",
                [&](const World& w)
@@ -39,10 +39,12 @@ CaseResult run(const CaseContext& context)
                    }
                });
         const bool rolls = std::tan(theta) <= 3.5 * mu;
-        const Real expected = rolls ? 5.0 / 7.0 * kG * std::sin(theta) : kG * (std::sin(theta) - mu * std::cos(theta));
+        const Real expected =
+            rolls ? 5.0 / 7.0 * kG * std::sin(theta) : kG * (std::sin(theta) - mu * std::cos(theta));
         char name[64];
         std::snprintf(name, sizeof name, "a (mu=%.3g, %s)", mu, rolls ? "rolls" : "slides");
-        r.quantities.push_back(relativeQuantity(name, "m/s^2", expected, fitSlope(t, v), 5e-3, "BENCHMARKS 7 #8"));
+        r.quantities.push_back(
+            relativeQuantity(name, "m/s^2", expected, fitSlope(t, v), 5e-3, "BENCHMARKS 7 #8"));
     }
     return r;
 }

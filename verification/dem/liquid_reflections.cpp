@@ -23,8 +23,7 @@ namespace veridem::verify
 namespace
 {
 
-template <typename... Args>
-std::string format(const char* fmt, Args... args)
+template <typename... Args> std::string format(const char* fmt, Args... args)
 {
     char buffer[320];
     std::snprintf(buffer, sizeof buffer, fmt, static_cast<double>(args)...);
@@ -88,13 +87,14 @@ CaseResult runLiquidReflections(const CaseContext& context)
                    const Vec3& x = p.position[i];
                    row.push_back(x.x);
                    row.push_back(x.y);
-                   dishRow.push_back(c * x.x + sn * x.y);  // rotated by -Omega t: the dish's frame
+                   dishRow.push_back(c * x.x + sn * x.y); // rotated by -Omega t: the dish's frame
                    dishRow.push_back(-sn * x.x + c * x.y);
                    hRow.push_back(x.z - a);
                    if (last)
                    {
                        finalHeight[i] += x.z - a;
-                       finalRate[i] += (x.x * p.velocity[i].y - x.y * p.velocity[i].x) / (x.x * x.x + x.y * x.y);
+                       finalRate[i] +=
+                           (x.x * p.velocity[i].y - x.y * p.velocity[i].x) / (x.x * x.x + x.y * x.y);
                    }
                }
                finalSamples += last ? 1 : 0;
@@ -121,16 +121,18 @@ CaseResult runLiquidReflections(const CaseContext& context)
             worstRate = finalRate[i];
     }
     CaseResult r;
-    r.quantities.push_back(absoluteQuantity(
-        "worst ball: h_final - (h_c* - dh/2)", "m", 0, worstHeight, 0.5 * (high - low),
-        format("every ball in [h_c* - dh - 5 mm, h_c* + 5 mm] = [%.4f, %.4f] m (h_c* = %.4f m, band dh = %.4f m)", low,
-               high, hStar, band)));
-    r.quantities.push_back(relativeQuantity("worst ball: orbital angular velocity", "rad/s", scene.omega, worstRate,
-                                            0.01, "co-rotation with the dish at the end (last 10 s)"));
-    r.notes.push_back(format("%.0f balls, dt = %.3g s, %.0f s; %.0f ball-ball collisions; largest overlap %.3g mm "
-                             "(%.2f %% of a); final heights %.4f-%.4f m",
-                             Real(n), dt, duration, Real(collisions), 1e3 * maxOverlap, 100 * maxOverlap / a, lowest,
-                             highest));
+    r.quantities.push_back(absoluteQuantity("worst ball: h_final - (h_c* - dh/2)", "m", 0, worstHeight,
+                                            0.5 * (high - low),
+                                            format("every ball in [h_c* - dh - 5 mm, h_c* + 5 mm] = [%.4f, "
+                                                   "%.4f] m (h_c* = %.4f m, band dh = %.4f m)",
+                                                   low, high, hStar, band)));
+    r.quantities.push_back(relativeQuantity("worst ball: orbital angular velocity", "rad/s", scene.omega,
+                                            worstRate, 0.01,
+                                            "co-rotation with the dish at the end (last 10 s)"));
+    r.notes.push_back(format(
+        "%.0f balls, dt = %.3g s, %.0f s; %.0f ball-ball collisions; largest overlap %.3g mm "
+        "(%.2f %% of a); final heights %.4f-%.4f m",
+        Real(n), dt, duration, Real(collisions), 1e3 * maxOverlap, 100 * maxOverlap / a, lowest, highest));
     r.series.push_back(std::move(paths));
     r.series.push_back(std::move(dishPaths));
     r.series.push_back(std::move(heights));
@@ -139,10 +141,11 @@ CaseResult runLiquidReflections(const CaseContext& context)
 
 } // namespace
 
-VERIDEM_CASE({.name = "liquid_reflections",
-              .summary = "seven acrylic balls on a turning concave dish collide, then each co-rotates at h_c*",
-              .reference = "Lijn, Liquid Reflections (1966-68); Xiang et al. eq. 5; BENCHMARKS 1c",
-              .labels = {"dem", "paper"},
-              .run = runLiquidReflections});
+VERIDEM_CASE(
+    {.name = "liquid_reflections",
+     .summary = "seven acrylic balls on a turning concave dish collide, then each co-rotates at h_c*",
+     .reference = "Lijn, Liquid Reflections (1966-68); Xiang et al. eq. 5; BENCHMARKS 1c",
+     .labels = {"dem", "paper"},
+     .run = runLiquidReflections});
 
 } // namespace veridem::verify

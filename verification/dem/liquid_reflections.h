@@ -11,20 +11,19 @@
 // 180 deg, gaps of 10 mm between neighbours: they start sliding at different speeds and collide.
 #pragma once
 
-#include "support.h"
-
 #include "dem/walls/wall.h"
+#include "support.h"
 
 namespace veridem::verify
 {
 
 struct LiquidReflectionsScene
 {
-    Real dishRadius = 1.5;      // R [m]
-    Real omega = 3.2;           // [rad/s]
-    Real ballRadius = 0.04;     // a [m]
-    Real gap = 0.01;            // between neighbouring balls at release [m]
-    Real clusterRadius = 0.3;   // horizontal radius of the cluster centre [m]
+    Real dishRadius = 1.5;    // R [m]
+    Real omega = 3.2;         // [rad/s]
+    Real ballRadius = 0.04;   // a [m]
+    Real gap = 0.01;          // between neighbouring balls at release [m]
+    Real clusterRadius = 0.3; // horizontal radius of the cluster centre [m]
 };
 
 inline Material acrylicBall()
@@ -60,7 +59,7 @@ inline World liquidReflectionsWorld(const LiquidReflectionsScene& s)
         if (k >= 0)
             p += spacing * Vec3{std::cos(k * kPi / 3), std::sin(k * kPi / 3), 0};
         const Real r2 = p.x * p.x + p.y * p.y;
-        p.z = s.dishRadius - std::sqrt(rhoS * rhoS - r2);  // resting on the dish
+        p.z = s.dishRadius - std::sqrt(rhoS * rhoS - r2); // resting on the dish
         world.particles.add(p, {}, {}, s.ballRadius, acrylicBall().density, 0);
     }
     dem::prepare(world);

@@ -5,9 +5,8 @@
 // (first-order error 0.15 %), so 0.3 % on e; tc within 0.5 % (the gap is interpolated linearly
 // between steps at entry and exit). At 200 steps per contact the e error is 4x smaller; we check
 // that run too, with a tolerance of 0.1 %.
-#include "support.h"
-
 #include "dem/models/normal.h"
+#include "support.h"
 
 namespace veridem::verify
 {
@@ -56,8 +55,9 @@ CaseResult run(const CaseContext& context)
     CaseResult r;
     const Impact coarse = impact(50, context);
     const Impact fine = impact(200, context);
-    r.quantities.push_back(relativeQuantity("e (50 steps/tc)", "", ball.restitution, coarse.restitution, 3e-3,
-                                            "first-order half-step dashpot error 0.15 % at 50 steps (BENCHMARKS 2.1)"));
+    r.quantities.push_back(
+        relativeQuantity("e (50 steps/tc)", "", ball.restitution, coarse.restitution, 3e-3,
+                         "first-order half-step dashpot error 0.15 % at 50 steps (BENCHMARKS 2.1)"));
     r.quantities.push_back(relativeQuantity("e (200 steps/tc)", "", ball.restitution, fine.restitution, 1e-3,
                                             "error is first order in dt: 4x smaller than at 50 steps"));
     r.quantities.push_back(relativeQuantity("tc (50 steps/tc)", "s", tc, coarse.contactTime, 5e-3,

@@ -14,13 +14,13 @@ namespace
 {
 Real rollingStopDistance(const CaseContext& context, Real& driftAfterStop)
 {
-    Material steel = flatTurntableBall();  // type A, muR = 1.5e-6 m
+    Material steel = flatTurntableBall(); // type A, muR = 1.5e-6 m
     const Real a = kFlatBallRadius, v0 = 0.1;
     World world = worldWith(steel, {0, 0, -kG});
     world.walls.push_back(floorWall());
     const Real m = sphereMass(steel.density, a);
-    world.particles.add({0, 0, a - m * kG / steel.normalStiffness}, {v0, 0, 0}, {0, v0 / a, 0}, a, steel.density,
-                        0);
+    world.particles.add({0, 0, a - m * kG / steel.normalStiffness}, {v0, 0, 0}, {0, v0 / a, 0}, a,
+                        steel.density, 0);
     Real stopX = -1;
     runFor(world, 70.0, 1e-5, context, "rolling_resistance_stop",
            [&](const World& w)
@@ -41,15 +41,15 @@ struct EpsdResult
 
 EpsdResult epsdIncline(const CaseContext& context, Real tanTheta, bool measureAcceleration)
 {
-    Material acrylic = dishBall();  // muR = 5e-5 m, a = 3 mm: muR' = 1/60
+    Material acrylic = dishBall(); // muR = 5e-5 m, a = 3 mm: muR' = 1/60
     acrylic.rollingModel = dem::RollingModel::Epsd;
     const Real theta = std::atan(tanTheta), a = kDishBallRadius;
     World world = worldWith(acrylic, {kG * std::sin(theta), 0, -kG * std::cos(theta)});
     world.walls.push_back(floorWall());
     const Real m = sphereMass(acrylic.density, a);
-    world.particles.add({0, 0, a - m * kG * std::cos(theta) / acrylic.normalStiffness}, {}, {}, a, acrylic.density,
-                        0);
-    const Real dt = 2e-5;  // tc / 145 for k = 1e3
+    world.particles.add({0, 0, a - m * kG * std::cos(theta) / acrylic.normalStiffness}, {}, {}, a,
+                        acrylic.density, 0);
+    const Real dt = 2e-5; // tc / 145 for k = 1e3
     // Settle: the EPSD rolling oscillator, omega = sqrt(kr/(I + m a^2)) = 23 rad/s with damping
     // ratio 0.3, decays as exp(-7 t): 4 s bring the initial 1e-4 m swing far below 1e-9 m.
     runFor(world, 4.0, dt, context, "rolling_resistance_stop", nullptr);
@@ -73,15 +73,16 @@ CaseResult run(const CaseContext& context)
     const Real a = kFlatBallRadius, v0 = 0.1, muR = flatTurntableBall().rollingFrictionLength;
     Real drift = 0;
     const Real stop = rollingStopDistance(context, drift);
-    r.quantities.push_back(relativeQuantity("type A stop distance", "m", 7 * a * v0 * v0 / (10 * muR * kG), stop, 1e-2,
-                                            "BENCHMARKS 7 #12"));
+    r.quantities.push_back(relativeQuantity("type A stop distance", "m", 7 * a * v0 * v0 / (10 * muR * kG),
+                                            stop, 1e-2, "BENCHMARKS 7 #12"));
     r.quantities.push_back(absoluteQuantity("type A drift after stop (5 s)", "m", 0, drift, 1e-6,
                                             "rest treatment: no chatter at rest"));
 
     const Real muRPrime = dishBall().rollingFrictionLength / kDishBallRadius;
     const EpsdResult hold = epsdIncline(context, 0.5 * muRPrime, false);
-    r.quantities.push_back(absoluteQuantity("EPSD drift, tan=0.5 muR' (1 s)", "m", 0, hold.drift, 1e-6,
-                                            "EPSD holds statically when tan(theta) <= muR' (BENCHMARKS 7 #12)"));
+    r.quantities.push_back(
+        absoluteQuantity("EPSD drift, tan=0.5 muR' (1 s)", "m", 0, hold.drift, 1e-6,
+                         "EPSD holds statically when tan(theta) <= muR' (BENCHMARKS 7 #12)"));
     const Real theta = std::atan(2 * muRPrime);
     const EpsdResult roll = epsdIncline(context, 2 * muRPrime, true);
     r.quantities.push_back(relativeQuantity("EPSD a, tan=2 muR'", "m/s^2",

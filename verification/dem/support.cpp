@@ -31,8 +31,8 @@ void runFor(World& world, Real duration, Real dt, const CaseContext& context, co
             {
                 lastReport = now;
                 const double fraction = double(s + 1) / double(steps);
-                std::fprintf(stderr, "\r  %s: %5.1f %%  t = %.3g s  ETA %.0f s   ", label.c_str(), 100 * fraction,
-                             world.time, elapsed / fraction - elapsed);
+                std::fprintf(stderr, "\r  %s: %5.1f %%  t = %.3g s  ETA %.0f s   ", label.c_str(),
+                             100 * fraction, world.time, elapsed / fraction - elapsed);
                 std::fflush(stderr);
             }
         }

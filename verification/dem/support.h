@@ -21,7 +21,7 @@ namespace veridem::verify
 using dem::Material;
 using dem::World;
 
-inline constexpr Real kG = kStandardGravity;  // [m/s^2]
+inline constexpr Real kG = kStandardGravity; // [m/s^2]
 
 /// The paper's flat-turntable ball (Table 1): steel, a = 6.35 mm, rho = 7800, mu = 0.15, e = 0.8,
 /// muR = 1.5e-6 m, k = 1e5 N/m (BENCHMARKS 1b decision), kt = 2/7 k.
@@ -37,7 +37,7 @@ inline Material flatTurntableBall()
     m.rollingFrictionLength = 1.5e-6;
     return m;
 }
-inline constexpr Real kFlatBallRadius = 6.35e-3;  // [m]
+inline constexpr Real kFlatBallRadius = 6.35e-3; // [m]
 
 /// The paper's dish ball (Table 1): a = 3 mm, rho = 7500, mu = 0.5, e = 0.8, muR = 5e-5 m, k = 1e3.
 inline Material dishBall()
@@ -52,9 +52,12 @@ inline Material dishBall()
     m.rollingFrictionLength = 5e-5;
     return m;
 }
-inline constexpr Real kDishBallRadius = 3e-3;  // [m]
+inline constexpr Real kDishBallRadius = 3e-3; // [m]
 
-inline Real sphereMass(Real density, Real radius) { return density * 4.0 / 3.0 * kPi * radius * radius * radius; }
+inline Real sphereMass(Real density, Real radius)
+{
+    return density * 4.0 / 3.0 * kPi * radius * radius * radius;
+}
 
 /// A world with one material and gravity g (vector).
 inline World worldWith(const Material& material, Vec3 gravity)
@@ -87,6 +90,9 @@ Real fitSlope(const std::vector<Real>& x, const std::vector<Real>& y);
 std::array<Real, 3> fitCircle(const std::vector<Real>& x, const std::vector<Real>& y);
 
 /// Time at which a linearly interpolated signal crosses zero between (t0, y0) and (t1, y1).
-inline Real crossingTime(Real t0, Real y0, Real t1, Real y1) { return t0 + (t1 - t0) * y0 / (y0 - y1); }
+inline Real crossingTime(Real t0, Real y0, Real t1, Real y1)
+{
+    return t0 + (t1 - t0) * y0 / (y0 - y1);
+}
 
 } // namespace veridem::verify

@@ -32,11 +32,12 @@ CaseResult run(const CaseContext& context)
         const Real tc = kPi * std::sqrt(mass / m.normalStiffness);
         runFor(world, 1e-4 / vn + 1.5 * tc, tc / 1000, context, "tangential_reversal", nullptr);
         const auto& p = world.particles;
-        const Real contactPointVt = p.velocity[0].x + a * -p.angularVelocity[0].y;  // v + w x (-a z)
+        const Real contactPointVt = p.velocity[0].x + a * -p.angularVelocity[0].y; // v + w x (-a z)
         char name[64];
         std::snprintf(name, sizeof name, "Vt'/Vt (kt/kn=%.4g)", ratio);
-        r.quantities.push_back(absoluteQuantity(name, "", std::cos(kPi * std::sqrt(3.5 * ratio)), contactPointVt / vt,
-                                                1e-2, "contact start/end within one step of 1000"));
+        r.quantities.push_back(absoluteQuantity(name, "", std::cos(kPi * std::sqrt(3.5 * ratio)),
+                                                contactPointVt / vt, 1e-2,
+                                                "contact start/end within one step of 1000"));
     }
     return r;
 }

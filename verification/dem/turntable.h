@@ -6,9 +6,8 @@
 // tangential spring carrying the rolling solution's friction force.
 #pragma once
 
-#include "support.h"
-
 #include "dem/walls/wall.h"
+#include "support.h"
 
 namespace veridem::verify
 {
@@ -21,10 +20,10 @@ struct TurntableSetup
     Real rollingFriction = 1.5e-6; // muR [m]
     Real initialRadius = 0.04;     // r0 [m]
     Real initialAngleDegrees = 180;
-    Real initialSpeed = 0.0;       // |v0| lab frame [m/s]
+    Real initialSpeed = 0.0; // |v0| lab frame [m/s]
     Real initialDirectionDegrees = 270;
-    Real stiffness = 1e5;          // kn [N/m]
-    Real tableRadius = 0.2;        // [m]
+    Real stiffness = 1e5;   // kn [N/m]
+    Real tableRadius = 0.2; // [m]
 };
 
 /// In-plane orthonormal basis (e1, e2) and normal k of the (possibly tilted) table.
@@ -74,7 +73,8 @@ inline World turntableWorld(const TurntableSetup& s)
     dem::prepare(world);
     const Vec3 gravityInPlane = world.gravity - dot(world.gravity, f.k) * f.k;
     const Vec3 friction = (2.0 / 7.0) * m * (s.omega * cross(f.k, v0) - gravityInPlane);
-    world.wallContacts.history[0].tangentialSpring = -friction / (ball.tangentialStiffnessRatio * s.stiffness);
+    world.wallContacts.history[0].tangentialSpring =
+        -friction / (ball.tangentialStiffnessRatio * s.stiffness);
     dem::prepare(world);
     return world;
 }

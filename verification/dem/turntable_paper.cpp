@@ -36,31 +36,33 @@ namespace veridem::verify
 namespace
 {
 
-constexpr Real kStep = 1e-5;         // DEM time step [s]
-constexpr Real kSample = 0.01;       // sampling interval of the comparison [s]
-constexpr Real kTheoryStep = 1e-3;   // RK4 step of the theory [s]
-constexpr Real kPathTolerance = 5e-4;  // [m]
+constexpr Real kStep = 1e-5;          // DEM time step [s]
+constexpr Real kSample = 0.01;        // sampling interval of the comparison [s]
+constexpr Real kTheoryStep = 1e-3;    // RK4 step of the theory [s]
+constexpr Real kPathTolerance = 5e-4; // [m]
 
 struct PaperTest
 {
     TurntableSetup setup;
-    Real maxDuration = 60;            // [s]
-    Real benchmarkLeaveTime = -1;     // BENCHMARKS 1b table "leaves" [s]; < 0: not given
-    bool farFieldDrift = false;       // spec T2/T3/T3b/T4 (and T5)
-    bool inwardDrift = false;         // spec T4b
-    bool radiusGrowth = false;        // spec "radius growth"
-    bool approach = false;            // T5 at 0.010 deg: axis crossing and approach point
+    Real maxDuration = 60;        // [s]
+    Real benchmarkLeaveTime = -1; // BENCHMARKS 1b table "leaves" [s]; < 0: not given
+    bool farFieldDrift = false;   // spec T2/T3/T3b/T4 (and T5)
+    bool inwardDrift = false;     // spec T4b
+    bool radiusGrowth = false;    // spec "radius growth"
+    bool approach = false;        // T5 at 0.010 deg: axis crossing and approach point
 };
 
-template <typename... Args>
-std::string format(const char* fmt, Args... args)
+template <typename... Args> std::string format(const char* fmt, Args... args)
 {
     char buffer[320];
     std::snprintf(buffer, sizeof buffer, fmt, static_cast<double>(args)...);
     return buffer;
 }
 
-Real wrapDegrees(Real d) { return d - 360.0 * std::round(d / 360.0); }
+Real wrapDegrees(Real d)
+{
+    return d - 360.0 * std::round(d / 360.0);
+}
 
 CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const std::string& label)
 {
@@ -71,9 +73,10 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
     const Real omegaOrbit = 2.0 / 7.0 * s.omega, period = 2 * kPi / omegaOrbit;
 
     const Vec3 gravityPlane = world.gravity - dot(world.gravity, f.k) * f.k;
-    RollingTableParams theoryParams{s.omega, {f.u(gravityPlane), f.v(gravityPlane), 0}, -dot(world.gravity, f.k),
-                                    s.rollingFriction, a, true};
-    RollingTableParams printedParams = theoryParams;  // BENCHMARKS T2 as printed: no twist torque
+    RollingTableParams theoryParams{
+        s.omega, {f.u(gravityPlane), f.v(gravityPlane), 0}, -dot(world.gravity, f.k), s.rollingFriction, a,
+        true};
+    RollingTableParams printedParams = theoryParams; // BENCHMARKS T2 as printed: no twist torque
     printedParams.twist = false;
     const auto demState = [&](const World& w)
     {
@@ -115,8 +118,10 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
         RollingTableState x = start;
         for (Real t = 0; t < duration; t += kSample)
         {
-            const Vec3 force = rollingTableRate(theoryParams, x).v - theoryParams.gravityInPlane;  // per unit mass
-            maxFrictionUse = std::max(maxFrictionUse, length(force) / (flatTurntableBall().friction * theoryParams.gravityNormal));
+            const Vec3 force =
+                rollingTableRate(theoryParams, x).v - theoryParams.gravityInPlane; // per unit mass
+            maxFrictionUse = std::max(
+                maxFrictionUse, length(force) / (flatTurntableBall().friction * theoryParams.gravityNormal));
             x = advance(theoryParams, x);
         }
     }
@@ -162,27 +167,31 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
     r.notes.push_back(format("dt = %.0e s (t_c/%.0f); run %.2f s = %.1f orbits; samples every %.2f s", kStep,
                              9.11e-4 / kStep, duration, duration / period, kSample));
     if (std::isfinite(leaveTime))
-        r.notes.push_back(format("theory: the ball reaches the table edge at %.2f s (BENCHMARKS 1b table: %.1f s)",
-                                 leaveTime, test.benchmarkLeaveTime));
+        r.notes.push_back(
+            format("theory: the ball reaches the table edge at %.2f s (BENCHMARKS 1b table: %.1f s)",
+                   leaveTime, test.benchmarkLeaveTime));
     r.notes.push_back(format("rigid rolling needs at most %.3f of the available friction mu N along the run "
                              "(the theory holds while < 1)",
                              maxFrictionUse));
-    r.notes.push_back(format("theory with the engine's torque (twist included, s0 = 0) vs BENCHMARKS T2 as printed "
-                             "(rolling part only): orbit centres differ by at most %.3g mm over the run",
-                             1e3 * maxPrintedGap));
+    r.notes.push_back(
+        format("theory with the engine's torque (twist included, s0 = 0) vs BENCHMARKS T2 as printed "
+               "(rolling part only): orbit centres differ by at most %.3g mm over the run",
+               1e3 * maxPrintedGap));
 
-    r.quantities.push_back(absoluteQuantity(
-        "max |c - c_theory| over the run", "m", 0, maxCentreError, kPathTolerance,
-        "orbit-centre path vs RK4 rigid rolling (T2 + twist) sampled every 0.01 s; 0.5 mm = spec 1b centre bound"));
-    r.quantities.push_back(absoluteQuantity("max |r - r_theory| over the run", "m", 0, maxPathError, kPathTolerance,
+    r.quantities.push_back(absoluteQuantity("max |c - c_theory| over the run", "m", 0, maxCentreError,
+                                            kPathTolerance,
+                                            "orbit-centre path vs RK4 rigid rolling (T2 + twist) sampled "
+                                            "every 0.01 s; 0.5 mm = spec 1b centre bound"));
+    r.quantities.push_back(absoluteQuantity("max |r - r_theory| over the run", "m", 0, maxPathError,
+                                            kPathTolerance,
                                             "ball path vs RK4 rigid rolling; same bound as the centre"));
 
     // Closed-form drift velocities (BENCHMARKS 1b guiding-centre equations).
     const Real alpha = degToRad(s.tiltDegrees);
-    const Real tiltDrift = 2.5 * kG * std::sin(alpha) / s.omega;                                  // V_t
-    const Real frictionDrift = 2.5 * s.rollingFriction * kG * std::cos(alpha) / (a * s.omega);  // V_r
+    const Real tiltDrift = 2.5 * kG * std::sin(alpha) / s.omega;                               // V_t
+    const Real frictionDrift = 2.5 * s.rollingFriction * kG * std::cos(alpha) / (a * s.omega); // V_r
     const Vec3 downhill = normalizedOrZero(theoryParams.gravityInPlane);
-    const Vec3 tiltDirection = kCross(downhill);  // k x g_hat
+    const Vec3 tiltDirection = kCross(downhill); // k x g_hat
 
     if (test.farFieldDrift)
     {
@@ -209,13 +218,14 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
         const auto orbitSamples = static_cast<std::size_t>(std::lround(period / kSample));
         if (bestLength < 2 * orbitSamples)
         {
-            r.notes.push_back(format("far-field drift not checked: the longest stretch with |c| > 3 rho lasts %.2f s, "
-                                     "less than 2 orbits (%.2f s)",
-                                     Real(bestLength) * kSample, 2 * period));
+            r.notes.push_back(
+                format("far-field drift not checked: the longest stretch with |c| > 3 rho lasts %.2f s, "
+                       "less than 2 orbits (%.2f s)",
+                       Real(bestLength) * kSample, 2 * period));
         }
         else
         {
-            const std::size_t i0 = bestStart, i1 = bestStart + bestLength - orbitSamples;  // window starts
+            const std::size_t i0 = bestStart, i1 = bestStart + bestLength - orbitSamples; // window starts
             auto meanCentre = [&](std::size_t from)
             {
                 Vec3 sum;
@@ -228,11 +238,13 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
             for (std::size_t k = i0 + orbitSamples / 2; k < i1 + orbitSamples / 2; ++k)
                 expected += tiltDrift * tiltDirection - frictionDrift * normalizedOrZero(centre[k]);
             expected = expected / Real(i1 - i0);
-            const Real expectedAngle = std::fmod(std::atan2(expected.y, expected.x) * 180 / kPi + 360.0, 360.0);
+            const Real expectedAngle =
+                std::fmod(std::atan2(expected.y, expected.x) * 180 / kPi + 360.0, 360.0);
             const Real measuredAngle =
                 expectedAngle + wrapDegrees(std::atan2(measured.y, measured.x) * 180 / kPi - expectedAngle);
-            r.notes.push_back(format("far-field window %.2f-%.2f s; V_t = %.4g mm/s toward k x g, V_r = %.4g mm/s",
-                                     time[i0], time[i1] + period, 1e3 * tiltDrift, 1e3 * frictionDrift));
+            r.notes.push_back(
+                format("far-field window %.2f-%.2f s; V_t = %.4g mm/s toward k x g, V_r = %.4g mm/s",
+                       time[i0], time[i1] + period, 1e3 * tiltDrift, 1e3 * frictionDrift));
             r.quantities.push_back(relativeQuantity(
                 "far-field centre drift speed", "m/s", length(expected), length(measured), 0.03,
                 "spec 1b: |V_t k x g - V_r c_hat| to 3 % (neglects ((5/7) rho/|c|)^2 and twist dilution)"));
@@ -255,10 +267,12 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
         for (const Vec3& c : centre)
             maxCentre = std::max(maxCentre, length(c));
         std::vector<Real> rhoTheoryFit(rhoTheory);
-        r.notes.push_back(format("theory with twist dilution: d rho/dt = %.5g mm/s (closed form V_r = %.5g mm/s)",
-                                 1e3 * fitSlope(time, rhoTheoryFit), 1e3 * frictionDrift));
-        r.quantities.push_back(relativeQuantity("radius growth d rho/dt", "m/s", frictionDrift, fitSlope(time, rho),
-                                                0.05, "spec 1b: centred orbit grows at V_r to 5 %"));
+        r.notes.push_back(
+            format("theory with twist dilution: d rho/dt = %.5g mm/s (closed form V_r = %.5g mm/s)",
+                   1e3 * fitSlope(time, rhoTheoryFit), 1e3 * frictionDrift));
+        r.quantities.push_back(relativeQuantity("radius growth d rho/dt", "m/s", frictionDrift,
+                                                fitSlope(time, rho), 0.05,
+                                                "spec 1b: centred orbit grows at V_r to 5 %"));
         r.quantities.push_back(absoluteQuantity(
             "max |c| (centre stays on the axis)", "m", 0, maxCentre, 1e-3,
             "c wobbles by V_r / omega_o ~ 0.07 mm about the axis; 1 mm allows no net drift over the run"));
@@ -293,35 +307,40 @@ CaseResult runPaperTest(const PaperTest& test, const CaseContext& context, const
             printedCentre[i] = orbitCentre(printed[i], s.omega);
         const auto [xPrinted, tPrinted] = crossingX(printedCentre);
         const std::size_t kPrinted = closest(printedCentre);
-        r.notes.push_back(format("centre crosses the x axis at x = %.2f mm, t = %.1f s (DEM); theory %.2f mm, %.1f s",
-                                 1e3 * xDem, tDem, 1e3 * xTheory, tTheory));
-        r.notes.push_back(format("closest approach to the axis: DEM (%.2f, %.2f) mm at %.1f s; theory %.2f mm", 1e3 * centre[kDem].x,
-                                 1e3 * centre[kDem].y, time[kDem], 1e3 * length(centreTheory[kTheory])));
-        r.notes.push_back(format("BENCHMARKS T2 as printed (no twist torque): crossing at x = %.2f mm, t = %.1f s; "
-                                 "closest approach %.2f mm at %.1f s (BENCHMARKS: ~16 mm, ~145 s; ~2 mm, ~240 s)",
-                                 1e3 * xPrinted, tPrinted, 1e3 * length(printedCentre[kPrinted]), time[kPrinted]));
-        r.quantities.push_back(absoluteQuantity("x of the centre's x-axis crossing", "m", xTheory, xDem, kPathTolerance,
+        r.notes.push_back(
+            format("centre crosses the x axis at x = %.2f mm, t = %.1f s (DEM); theory %.2f mm, %.1f s",
+                   1e3 * xDem, tDem, 1e3 * xTheory, tTheory));
+        r.notes.push_back(format(
+            "closest approach to the axis: DEM (%.2f, %.2f) mm at %.1f s; theory %.2f mm",
+            1e3 * centre[kDem].x, 1e3 * centre[kDem].y, time[kDem], 1e3 * length(centreTheory[kTheory])));
+        r.notes.push_back(
+            format("BENCHMARKS T2 as printed (no twist torque): crossing at x = %.2f mm, t = %.1f s; "
+                   "closest approach %.2f mm at %.1f s (BENCHMARKS: ~16 mm, ~145 s; ~2 mm, ~240 s)",
+                   1e3 * xPrinted, tPrinted, 1e3 * length(printedCentre[kPrinted]), time[kPrinted]));
+        r.quantities.push_back(absoluteQuantity("x of the centre's x-axis crossing", "m", xTheory, xDem,
+                                                kPathTolerance,
                                                 "a point of the centre path: the path bound"));
-        r.quantities.push_back(absoluteQuantity("closest approach of c to the axis", "m",
-                                                length(centreTheory[kTheory]), length(centre[kDem]), kPathTolerance,
-                                                "a point of the centre path: the path bound"));
+        r.quantities.push_back(absoluteQuantity(
+            "closest approach of c to the axis", "m", length(centreTheory[kTheory]), length(centre[kDem]),
+            kPathTolerance, "a point of the centre path: the path bound"));
     }
 
     // Series for the report: ball path and orbit centre, DEM and theory, every 0.02-0.05 s.
     const std::size_t stride = duration > 60 ? 5 : 2;
     Series path{"trajectory",
-                {"t", "x", "y", "x_theory", "y_theory", "cx", "cy", "cx_theory", "cy_theory", "rho", "rho_theory",
-                 "x_t2", "y_t2"},
+                {"t", "x", "y", "x_theory", "y_theory", "cx", "cy", "cx_theory", "cy_theory", "rho",
+                 "rho_theory", "x_t2", "y_t2"},
                 {}};
     for (std::size_t i = 0; i < n; i += stride)
-        path.rows.push_back({time[i], dem[i].r.x, dem[i].r.y, theory[i].r.x, theory[i].r.y, centre[i].x, centre[i].y,
-                             centreTheory[i].x, centreTheory[i].y, rho[i], rhoTheory[i], printed[i].r.x,
-                             printed[i].r.y});
+        path.rows.push_back({time[i], dem[i].r.x, dem[i].r.y, theory[i].r.x, theory[i].r.y, centre[i].x,
+                             centre[i].y, centreTheory[i].x, centreTheory[i].y, rho[i], rhoTheory[i],
+                             printed[i].r.x, printed[i].r.y});
     r.series.push_back(std::move(path));
     return r;
 }
 
-TurntableSetup setup(Real omega, Real tilt, Real downhill, Real muR, Real r0, Real angle0, Real v0, Real direction0)
+TurntableSetup setup(Real omega, Real tilt, Real downhill, Real muR, Real r0, Real angle0, Real v0,
+                     Real direction0)
 {
     TurntableSetup s;
     s.omega = omega;
@@ -337,23 +356,33 @@ TurntableSetup setup(Real omega, Real tilt, Real downhill, Real muR, Real r0, Re
 
 PaperTest testT2()
 {
-    return {.setup = setup(10, 0.17, 135, 1.5e-6, 0.04, 180, 0.107, 270), .maxDuration = 60,
-            .benchmarkLeaveTime = 24.1, .farFieldDrift = true};
+    return {.setup = setup(10, 0.17, 135, 1.5e-6, 0.04, 180, 0.107, 270),
+            .maxDuration = 60,
+            .benchmarkLeaveTime = 24.1,
+            .farFieldDrift = true};
 }
 PaperTest testT3(Real muR, Real leave)
 {
-    return {.setup = setup(17.6, 0.52, 90, muR, 0.01, 0, 0.008, 90), .maxDuration = 60, .benchmarkLeaveTime = leave,
+    return {.setup = setup(17.6, 0.52, 90, muR, 0.01, 0, 0.008, 90),
+            .maxDuration = 60,
+            .benchmarkLeaveTime = leave,
             .farFieldDrift = true};
 }
 PaperTest testT4(Real tilt)
 {
-    return {.setup = setup(17.6, tilt, 90, 1.5e-6, 0.13, 180, 0.009, 270), .maxDuration = tilt > 0 ? 60.0 : 180.0,
-            .benchmarkLeaveTime = tilt > 0 ? 17.1 : -1.0, .farFieldDrift = tilt > 0, .inwardDrift = tilt == 0};
+    return {.setup = setup(17.6, tilt, 90, 1.5e-6, 0.13, 180, 0.009, 270),
+            .maxDuration = tilt > 0 ? 60.0 : 180.0,
+            .benchmarkLeaveTime = tilt > 0 ? 17.1 : -1.0,
+            .farFieldDrift = tilt > 0,
+            .inwardDrift = tilt == 0};
 }
 PaperTest testT5(Real tilt)
 {
-    return {.setup = setup(17.6, tilt, 180, 1.5e-6, 0.08, 45, 0, 0), .maxDuration = tilt > 0.05 ? 150.0 : 300.0,
-            .benchmarkLeaveTime = tilt > 0.05 ? 110.0 : -1.0, .farFieldDrift = true, .approach = tilt < 0.05};
+    return {.setup = setup(17.6, tilt, 180, 1.5e-6, 0.08, 45, 0, 0),
+            .maxDuration = tilt > 0.05 ? 150.0 : 300.0,
+            .benchmarkLeaveTime = tilt > 0.05 ? 110.0 : -1.0,
+            .farFieldDrift = true,
+            .approach = tilt < 0.05};
 }
 PaperTest testGrowth()
 {
@@ -361,17 +390,18 @@ PaperTest testGrowth()
     // = 58.2 mm (mu = 0.15): that orbit reaches the limit after 25 s, then slides and is thrown off
     // the table (the DEM shows it). r0 = 0.04 m for 40 s ends at rho = 53 mm (92 % of the friction).
     const Real omega = 17.6, r0 = 0.04;
-    return {.setup = setup(omega, 0, 0, 1.5e-6, r0, 0, 2.0 / 7.0 * omega * r0, 90), .maxDuration = 40,
+    return {.setup = setup(omega, 0, 0, 1.5e-6, r0, 0, 2.0 / 7.0 * omega * r0, 90),
+            .maxDuration = 40,
             .radiusGrowth = true};
 }
 
 } // namespace
 
-#define VERIDEM_TURNTABLE_CASE(caseName, labelList, text, ref, make)                                        \
-    VERIDEM_CASE({.name = caseName,                                                                         \
-                  .summary = text,                                                                          \
-                  .reference = ref,                                                                         \
-                  .labels = labelList,                                                                      \
+#define VERIDEM_TURNTABLE_CASE(caseName, labelList, text, ref, make)                                         \
+    VERIDEM_CASE({.name = caseName,                                                                          \
+                  .summary = text,                                                                           \
+                  .reference = ref,                                                                          \
+                  .labels = labelList,                                                                       \
                   .run = [](const CaseContext& c) { return runPaperTest(make, c, caseName); }})
 
 VERIDEM_TURNTABLE_CASE("turntable_t2_tilted", (std::vector<std::string>{"dem", "quick", "paper"}),

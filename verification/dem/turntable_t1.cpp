@@ -21,7 +21,8 @@ CaseResult runStationary(const CaseContext& context)
     const Vec3 r0 = world.particles.position[0];
     const TableFrame f = tableFrame(s);
     Real maxDeparture = 0;
-    Series path{"trajectory", {"t", "x", "y", "x_theory", "y_theory"}, {{0, f.u(r0), f.v(r0), f.u(r0), f.v(r0)}}};
+    Series path{
+        "trajectory", {"t", "x", "y", "x_theory", "y_theory"}, {{0, f.u(r0), f.v(r0), f.u(r0), f.v(r0)}}};
     runFor(world, 20.0, 1e-5, context, "turntable_t1a_stationary",
            [&](const World& w)
            {
@@ -73,15 +74,17 @@ CaseResult runOrbit(const CaseContext& context)
                    const Vec3 start = r0 - centre;
                    const Real phase = omegaOrbit * w.time;
                    const Vec3 rotated = std::cos(phase) * start + std::sin(phase) * cross(f.k, start);
-                   path.rows.push_back({w.time, x.back(), y.back(), f.u(centre + rotated), f.v(centre + rotated)});
+                   path.rows.push_back(
+                       {w.time, x.back(), y.back(), f.u(centre + rotated), f.v(centre + rotated)});
                }
            });
     const auto circle = fitCircle(x, y);
     const Real centreError = std::hypot(circle[0] - f.u(centre), circle[1] - f.v(centre));
     CaseResult r;
-    r.quantities.push_back(relativeQuantity("orbit angular velocity", "rad/s", omegaOrbit, fitSlope(t, angle), 2e-3,
-                                            "BENCHMARKS 1b spec (0.2 %)"));
-    r.quantities.push_back(relativeQuantity("orbit radius", "m", rho, circle[2], 1e-2, "BENCHMARKS 1b spec (1 %)"));
+    r.quantities.push_back(relativeQuantity("orbit angular velocity", "rad/s", omegaOrbit, fitSlope(t, angle),
+                                            2e-3, "BENCHMARKS 1b spec (0.2 %)"));
+    r.quantities.push_back(
+        relativeQuantity("orbit radius", "m", rho, circle[2], 1e-2, "BENCHMARKS 1b spec (1 %)"));
     r.quantities.push_back(absoluteQuantity("orbit centre offset", "m", 0, centreError, 5e-4,
                                             "BENCHMARKS 1b spec (0.5 mm over 10 orbits)"));
     r.series.push_back(std::move(path));
@@ -94,9 +97,10 @@ VERIDEM_CASE({.name = "turntable_t1a_stationary",
               .reference = "Xiang et al. Fig. 3; BENCHMARKS 1b T1a",
               .labels = {"dem", "quick", "paper"},
               .run = runStationary});
-VERIDEM_CASE({.name = "turntable_t1b_orbit",
-              .summary = "paper Test 1 with a push: orbit at 2/7 Omega, centre and radius from the initial state",
-              .reference = "Weltner 1979; Xiang et al. Fig. 3; BENCHMARKS 1b T1b",
-              .labels = {"dem", "quick", "paper"},
-              .run = runOrbit});
+VERIDEM_CASE(
+    {.name = "turntable_t1b_orbit",
+     .summary = "paper Test 1 with a push: orbit at 2/7 Omega, centre and radius from the initial state",
+     .reference = "Weltner 1979; Xiang et al. Fig. 3; BENCHMARKS 1b T1b",
+     .labels = {"dem", "quick", "paper"},
+     .run = runOrbit});
 } // namespace veridem::verify

@@ -32,12 +32,12 @@ namespace veridem::verify
 
 struct RollingTableParams
 {
-    Real omega = 0;          // table angular velocity about k [rad/s]
-    Vec3 gravityInPlane;     // in-plane part of gravity, table coordinates (z = 0) [m/s^2]
-    Real gravityNormal = 0;  // g cos(alpha) [m/s^2]
-    Real rollingFriction = 0;  // muR [m]
-    Real radius = 0;         // a [m]
-    bool twist = true;       // torque opposes the whole w_rel (engine default) or only its rolling part
+    Real omega = 0;           // table angular velocity about k [rad/s]
+    Vec3 gravityInPlane;      // in-plane part of gravity, table coordinates (z = 0) [m/s^2]
+    Real gravityNormal = 0;   // g cos(alpha) [m/s^2]
+    Real rollingFriction = 0; // muR [m]
+    Real radius = 0;          // a [m]
+    bool twist = true;        // torque opposes the whole w_rel (engine default) or only its rolling part
 };
 
 struct RollingTableState
@@ -46,15 +46,18 @@ struct RollingTableState
     Real spin = 0; // w . k [rad/s]
 };
 
-inline Vec3 kCross(const Vec3& a) { return {-a.y, a.x, 0}; }  // k x a for in-plane a
+inline Vec3 kCross(const Vec3& a)
+{
+    return {-a.y, a.x, 0};
+} // k x a for in-plane a
 
 inline RollingTableState rollingTableRate(const RollingTableParams& p, const RollingTableState& s)
 {
-    const Vec3 slip = s.v - p.omega * kCross(s.r);  // u_rel [m/s]
-    const Real rolling = length(slip) / p.radius;    // |w_perp| [rad/s]
+    const Vec3 slip = s.v - p.omega * kCross(s.r); // u_rel [m/s]
+    const Real rolling = length(slip) / p.radius;  // |w_perp| [rad/s]
     const Real twistRate = p.twist ? s.spin - p.omega : 0.0;
-    const Real relative = std::sqrt(rolling * rolling + twistRate * twistRate);  // |w_rel|
-    const Real resistance = p.rollingFriction * p.gravityNormal / p.radius;      // muR gN / a [m/s^2]
+    const Real relative = std::sqrt(rolling * rolling + twistRate * twistRate); // |w_rel|
+    const Real resistance = p.rollingFriction * p.gravityNormal / p.radius;     // muR gN / a [m/s^2]
     RollingTableState rate;
     rate.r = s.v;
     rate.v = (2.0 / 7.0) * p.omega * kCross(s.v) + (5.0 / 7.0) * p.gravityInPlane;
@@ -69,8 +72,9 @@ inline RollingTableState rollingTableRate(const RollingTableParams& p, const Rol
 /// One classical RK4 step of length h [s].
 inline RollingTableState rollingTableStep(const RollingTableParams& p, const RollingTableState& s, Real h)
 {
-    auto add = [](const RollingTableState& a, const RollingTableState& b, Real f)
-    { return RollingTableState{a.r + f * b.r, a.v + f * b.v, a.spin + f * b.spin}; };
+    auto add = [](const RollingTableState& a, const RollingTableState& b, Real f) {
+        return RollingTableState{a.r + f * b.r, a.v + f * b.v, a.spin + f * b.spin};
+    };
     const RollingTableState k1 = rollingTableRate(p, s);
     const RollingTableState k2 = rollingTableRate(p, add(s, k1, 0.5 * h));
     const RollingTableState k3 = rollingTableRate(p, add(s, k2, 0.5 * h));
@@ -83,8 +87,14 @@ inline RollingTableState rollingTableStep(const RollingTableParams& p, const Rol
 }
 
 /// Guiding centre c = r + k x v / omega_o of a state [m].
-inline Vec3 orbitCentre(const RollingTableState& s, Real omega) { return s.r + kCross(s.v) / (2.0 / 7.0 * omega); }
+inline Vec3 orbitCentre(const RollingTableState& s, Real omega)
+{
+    return s.r + kCross(s.v) / (2.0 / 7.0 * omega);
+}
 /// Orbit radius rho = |v| / omega_o [m].
-inline Real orbitRadius(const RollingTableState& s, Real omega) { return length(s.v) / (2.0 / 7.0 * omega); }
+inline Real orbitRadius(const RollingTableState& s, Real omega)
+{
+    return length(s.v) / (2.0 / 7.0 * omega);
+}
 
 } // namespace veridem::verify

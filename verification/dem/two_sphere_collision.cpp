@@ -5,9 +5,8 @@
 //     arms add up to the centre distance (contact-radius convention, docs/models.md): 1e-12;
 //   * the normal relative velocity restitution equals e (0.3 % at >= 50 steps per contact,
 //     BENCHMARKS 2.1; here 100 steps per contact).
-#include "support.h"
-
 #include "dem/models/normal.h"
+#include "support.h"
 
 namespace veridem::verify
 {
@@ -80,9 +79,10 @@ CaseResult run(const CaseContext& context)
     approach = -dot(Vec3{1.0, 0.0, 0.1} - Vec3{-0.3, 0.1, 0}, normal);
     const Vec3 p1 = linearMomentum(world), l1 = angularMomentum(world);
     CaseResult r;
-    r.quantities.push_back(relativeQuantity("|P|", "kg m/s", length(p0), length(p1), 1e-12, "Newton's third law"));
-    r.quantities.push_back(absoluteQuantity("|P - P0| / |P0|", "", 0, length(p1 - p0) / length(p0), 1e-12,
-                                            "round-off"));
+    r.quantities.push_back(
+        relativeQuantity("|P|", "kg m/s", length(p0), length(p1), 1e-12, "Newton's third law"));
+    r.quantities.push_back(
+        absoluteQuantity("|P - P0| / |P0|", "", 0, length(p1 - p0) / length(p0), 1e-12, "round-off"));
     r.quantities.push_back(absoluteQuantity("|L - L0| / |L0|", "", 0, length(l1 - l0) / length(l0), 1e-12,
                                             "lever arms sum to the centre distance"));
     r.notes.push_back("oblique impact: normal restitution along the rotating line of centres = " +
@@ -94,9 +94,11 @@ CaseResult run(const CaseContext& context)
     headOn.particles.add({-0.02, 0, 0}, {1.0, 0, 0}, {}, r1, glass.density, 0);
     headOn.particles.add({0, 0, 0}, {-0.3, 0, 0}, {}, r2, glass.density, 0);
     runFor(headOn, 0.05, dt, context, "two_sphere_collision", nullptr);
-    const Real restitution = -(headOn.particles.velocity[0].x - headOn.particles.velocity[1].x) / (1.0 - -0.3);
-    r.quantities.push_back(relativeQuantity("head-on restitution", "", glass.restitution, restitution, 3e-3,
-                                            "BENCHMARKS 2.1 (first-order dashpot error < 0.15 % at >= 50 steps)"));
+    const Real restitution =
+        -(headOn.particles.velocity[0].x - headOn.particles.velocity[1].x) / (1.0 - -0.3);
+    r.quantities.push_back(
+        relativeQuantity("head-on restitution", "", glass.restitution, restitution, 3e-3,
+                         "BENCHMARKS 2.1 (first-order dashpot error < 0.15 % at >= 50 steps)"));
     if (!separated)
         r.notes.push_back("the spheres did not separate within 0.05 s");
     return r;

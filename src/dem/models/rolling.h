@@ -36,8 +36,8 @@ inline Vec3 constantRollingTorque(Real muR, Real normalForce, const Vec3& relati
 
 struct RollingSpringResult
 {
-    Vec3 torque;  // on the particle [N m]
-    Vec3 spring;  // updated elastic torque Mk [N m]
+    Vec3 torque; // on the particle [N m]
+    Vec3 spring; // updated elastic torque Mk [N m]
     bool fullyMobilised = false;
 };
 

@@ -19,8 +19,8 @@ namespace veridem::dem
 
 struct TangentialResult
 {
-    Vec3 force;   // on the particle [N]
-    Vec3 spring;  // updated spring displacement xi [m]
+    Vec3 force;  // on the particle [N]
+    Vec3 spring; // updated spring displacement xi [m]
     bool sliding = false;
 };
 

@@ -25,22 +25,22 @@ namespace veridem::dem
 
 struct PlaneShape
 {
-    Vec3 point;                                           // a point of the plane [m] (disk centre)
-    Vec3 normal{0, 0, 1};                                 // unit normal into the particle side
-    Real diskRadius = std::numeric_limits<Real>::infinity();  // [m]; infinite plane by default
+    Vec3 point;                                              // a point of the plane [m] (disk centre)
+    Vec3 normal{0, 0, 1};                                    // unit normal into the particle side
+    Real diskRadius = std::numeric_limits<Real>::infinity(); // [m]; infinite plane by default
 };
 
 struct DishShape
 {
-    Vec3 lowestPoint;         // [m]
-    Real sphereRadius = 1.0;  // R [m]
+    Vec3 lowestPoint;        // [m]
+    Real sphereRadius = 1.0; // R [m]
 };
 
 struct WallMotion
 {
-    Vec3 velocity;         // translation [m/s]
-    Vec3 angularVelocity;  // [rad/s], along the shape's symmetry axis
-    Vec3 rotationCentre;   // a point of the rotation axis at t = 0 [m] (moves with the translation)
+    Vec3 velocity;        // translation [m/s]
+    Vec3 angularVelocity; // [rad/s], along the shape's symmetry axis
+    Vec3 rotationCentre;  // a point of the rotation axis at t = 0 [m] (moves with the translation)
 };
 
 struct Wall
@@ -49,16 +49,16 @@ struct Wall
     std::variant<PlaneShape, DishShape> shape;
     WallMotion motion;
     std::uint32_t material = 0;
-    Vec3 displacement;  // accumulated translation since t = 0 [m] (updated by the step)
+    Vec3 displacement; // accumulated translation since t = 0 [m] (updated by the step)
 };
 
 /// Contact of a sphere (centre x, radius r) with a wall shape.
 struct WallGap
 {
     bool touching = false;
-    Real overlap = 0;      // [m]
-    Vec3 normal;           // unit, from the wall towards the sphere centre
-    Real effectiveRadius;  // R* for Hertz/rolling [m]
+    Real overlap = 0;         // [m]
+    Vec3 normal;              // unit, from the wall towards the sphere centre
+    Real effectiveRadius = 0; // R* for Hertz/rolling [m]
 };
 
 inline WallGap wallGap(const PlaneShape& plane, const Vec3& offset, const Vec3& x, Real r)
@@ -75,7 +75,7 @@ inline WallGap wallGap(const PlaneShape& plane, const Vec3& offset, const Vec3& 
         if (lengthSquared(inPlane) > plane.diskRadius * plane.diskRadius)
             return g;
     }
-    if (distance < -r)  // fully behind the plane: not a contact of this one-sided wall
+    if (distance < -r) // fully behind the plane: not a contact of this one-sided wall
         return g;
     g.touching = true;
     g.overlap = overlap;
@@ -89,7 +89,7 @@ inline WallGap wallGap(const DishShape& dish, const Vec3& offset, const Vec3& x,
     WallGap g;
     const Vec3 centre = dish.lowestPoint + offset + Vec3{0, 0, dish.sphereRadius};
     const Vec3 toCentre = centre - x;
-    if (x.z > centre.z)  // above the rim of the hemisphere
+    if (x.z > centre.z) // above the rim of the hemisphere
         return g;
     const Real distance = length(toCentre);
     const Real overlap = distance + r - dish.sphereRadius;

@@ -1,0 +1,309 @@
+#include "io/dem_scene.h"
+
+#include "core/constants.h"
+#include "core/error.h"
+#include "dem/walls/wall.h"
+#include "io/toml_reader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace veridem::io
+{
+
+namespace
+{
+
+dem::Material readMaterial(TableReader& t)
+{
+    dem::Material m;
+    m.name = t.requiredString("name");
+    m.density = t.requiredNumber("density");
+    t.requirePositive("density", m.density, "kg/m^3");
+    const std::string model = t.choice("model", "linear", {"linear", "hertz"});
+    m.normalModel = model == "linear" ? dem::NormalModel::Linear : dem::NormalModel::Hertz;
+    if (m.normalModel == dem::NormalModel::Linear)
+    {
+        m.normalStiffness = t.requiredNumber("kn");
+        t.requirePositive("kn", m.normalStiffness, "N/m");
+        m.tangentialStiffnessRatio = t.number("kt_over_kn", 2.0 / 7.0);
+        t.requireNonNegative("kt_over_kn", m.tangentialStiffnessRatio, "");
+    }
+    else
+    {
+        m.youngsModulus = t.requiredNumber("youngs_modulus");
+        t.requirePositive("youngs_modulus", m.youngsModulus, "Pa");
+        m.poissonRatio = t.requiredNumber("poisson_ratio");
+        if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
+            t.fail("poisson_ratio", "must be in (-1, 0.5)");
+    }
+    m.restitution = t.number("restitution", 0.8);
+    if (!(m.restitution > 0 && m.restitution <= 1))
+        t.fail("restitution", "must be in (0, 1] (got " + std::to_string(m.restitution) + ")");
+    if (auto rate = t.optionalNumber("damping_rate"))
+    {
+        t.requireNonNegative("damping_rate", *rate, "1/s");
+        m.normalDampingRate = *rate;
+    }
+    if (auto ratio = t.optionalNumber("tangential_damping_ratio"))
+    {
+        t.requireNonNegative("tangential_damping_ratio", *ratio, "");
+        m.tangentialDampingRatio = *ratio;
+    }
+    m.friction = t.number("friction", 0.5);
+    t.requireNonNegative("friction", m.friction, "");
+    const std::string rolling =
+        t.choice("rolling_model", "constant_torque", {"none", "constant_torque", "epsd"});
+    m.rollingFrictionLength = t.number("rolling_friction", 0.0);
+    t.requireNonNegative("rolling_friction", m.rollingFrictionLength, "m");
+    m.rollingFrictionDimensionless = t.number("rolling_friction_dimensionless", 0.0);
+    t.requireNonNegative("rolling_friction_dimensionless", m.rollingFrictionDimensionless, "");
+    if (m.rollingFrictionLength > 0 && m.rollingFrictionDimensionless > 0)
+        t.fail("rolling_friction_dimensionless",
+               "give rolling friction as a length or dimensionless, not both");
+    m.rollingDampingRatio = t.number("rolling_damping_ratio", 0.3);
+    const bool anyRolling = m.rollingFrictionLength > 0 || m.rollingFrictionDimensionless > 0;
+    m.rollingModel = !anyRolling || rolling == "none" ? dem::RollingModel::None
+                     : rolling == "epsd"              ? dem::RollingModel::Epsd
+                                                      : dem::RollingModel::ConstantTorque;
+    t.finish();
+    return m;
+}
+
+dem::Wall readWall(TableReader& t, const dem::World& world)
+{
+    dem::Wall wall;
+    wall.name = t.requiredString("name");
+    const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish"});
+    wall.material = world.materialId(t.requiredString("material"));
+    if (type == "plane")
+    {
+        dem::PlaneShape plane;
+        plane.point = t.vec3("point", {});
+        const Vec3 normal = t.requiredVec3("normal");
+        if (!(length(normal) > 0))
+            t.fail("normal", "must be a non-zero vector");
+        plane.normal = normal / length(normal);
+        wall.shape = plane;
+        wall.motion.velocity = t.vec3("velocity", {});
+        const Real omega = t.number("omega", 0.0);
+        wall.motion.angularVelocity = omega * plane.normal;
+        wall.motion.rotationCentre = plane.point;
+    }
+    else if (type == "turntable")
+    {
+        dem::PlaneShape disk;
+        disk.point = t.vec3("centre", {});
+        disk.diskRadius = t.requiredNumber("radius");
+        t.requirePositive("radius", disk.diskRadius, "m");
+        const Real tilt = t.number("tilt_degrees", 0.0);
+        const Real downhill = t.number("downhill_degrees", 0.0);
+        if (!(std::fabs(tilt) < 90))
+            t.fail("tilt_degrees", "must be in (-90, 90) degrees");
+        disk.normal = dem::tiltedNormal(degToRad(tilt), degToRad(downhill));
+        wall.shape = disk;
+        wall.motion.angularVelocity = t.number("omega", 0.0) * disk.normal;
+        wall.motion.rotationCentre = disk.point;
+    }
+    else
+    {
+        dem::DishShape dish;
+        dish.lowestPoint = t.vec3("lowest_point", {});
+        dish.sphereRadius = t.requiredNumber("sphere_radius");
+        t.requirePositive("sphere_radius", dish.sphereRadius, "m");
+        wall.shape = dish;
+        wall.motion.angularVelocity = {0, 0, t.number("omega", 0.0)};
+        wall.motion.rotationCentre = dish.lowestPoint;
+    }
+    t.finish();
+    return wall;
+}
+
+/// Moves a sphere onto a wall at its resting overlap and, if asked, sets the no-slip spin.
+void placeOnWall(dem::World& world, std::uint32_t i, const dem::Wall& wall, bool noSlip, const TableReader& t)
+{
+    auto& p = world.particles;
+    const Real r = p.radius[i];
+    Vec3 normal;
+    if (const auto* plane = std::get_if<dem::PlaneShape>(&wall.shape))
+    {
+        normal = plane->normal;
+        const Real distance = dot(p.position[i] - plane->point, normal);
+        p.position[i] -= distance * normal; // onto the surface
+    }
+    else
+    {
+        const auto& dish = std::get<dem::DishShape>(wall.shape);
+        const Vec3 centre = dish.lowestPoint + Vec3{0, 0, dish.sphereRadius};
+        Vec3 out = p.position[i] - centre;
+        if (!(length(out) > 0) || out.z > 0)
+            t.fail("on_wall", "the sphere's position must be below the dish centre");
+        out = out / length(out);
+        p.position[i] = centre + dish.sphereRadius * out;
+        normal = -out;
+    }
+    // Resting overlap under the normal part of gravity (linear: m g_n / kn; Hertz: solved).
+    const dem::PairParams params =
+        dem::mixMaterials(world.materials[p.material[i]], world.materials[wall.material]);
+    const Real load = std::fmax(-dot(world.gravity, normal), 0.0) * p.mass[i];
+    Real overlap = 0;
+    if (params.normalModel == dem::NormalModel::Linear)
+        overlap = load / params.kn;
+    else
+        overlap = std::pow(3 * load / (4 * params.effectiveModulus * std::sqrt(r)), 2.0 / 3.0);
+    p.position[i] += (r - overlap) * normal;
+    if (noSlip)
+    {
+        const Vec3 contactPoint = p.position[i] - r * normal;
+        const Vec3 slip = p.velocity[i] - dem::wallSurfaceVelocity(wall, contactPoint);
+        const Vec3 inPlaneSlip = slip - dot(slip, normal) * normal;
+        p.angularVelocity[i] = cross(normal, inPlaneSlip) / r; // no spin about the normal
+    }
+}
+
+void readParticleFile(TableReader& t, dem::World& world, const std::string& sceneFile)
+{
+    std::filesystem::path path = t.requiredString("file");
+    if (path.is_relative())
+        path = std::filesystem::path(sceneFile).parent_path() / path;
+    const std::uint32_t material = world.materialId(t.requiredString("material"));
+    const Real radius = t.requiredNumber("radius");
+    t.requirePositive("radius", radius, "m");
+    const Vec3 velocity = t.vec3("velocity", {});
+    t.finish();
+    std::ifstream in(path);
+    if (!in)
+        t.fail("file", "cannot be opened: '" + path.string() + "'");
+    std::string line;
+    std::size_t lineNumber = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNumber;
+        if (line.empty() || line[0] == '#')
+            continue;
+        std::istringstream s(line);
+        Vec3 x;
+        if (!(s >> x.x >> x.y >> x.z) || !isFinite(x))
+            throw InputError(path.string() + ":" + std::to_string(lineNumber) +
+                             ": expected three numbers 'x y z' in metres");
+        world.particles.add(x, velocity, {}, radius, world.materials[material].density, material);
+    }
+}
+
+void checkInitialOverlaps(dem::World& world, Real tolerance)
+{
+    dem::prepare(world);
+    const auto& p = world.particles;
+    const auto& list = world.neighbors;
+    for (std::size_t k = 0; k < list.size(); ++k)
+    {
+        const auto i = list.first[k], j = list.second[k];
+        const Real overlap = p.radius[i] + p.radius[j] - length(p.position[i] - p.position[j]);
+        if (overlap > tolerance * std::min(p.radius[i], p.radius[j]))
+        {
+            std::ostringstream s;
+            s << "spheres " << i << " and " << j << " overlap by " << overlap << " m initially (more than "
+              << tolerance << " of the smaller radius; see [simulation] initial_overlap_tolerance)";
+            throw InputError(s.str());
+        }
+    }
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (const auto& wall : world.walls)
+        {
+            const dem::WallGap gap = dem::wallGap(wall, p.position[i], p.radius[i]);
+            if (gap.touching && gap.overlap > tolerance * p.radius[i] + 1e-12)
+            {
+                std::ostringstream s;
+                s << "sphere " << i << " overlaps wall '" << wall.name << "' by " << gap.overlap
+                  << " m initially (more than " << tolerance << " of its radius; use on_wall to place it)";
+                throw InputError(s.str());
+            }
+        }
+}
+
+} // namespace
+
+DemScene readDemScene(const toml::table& root, const std::string& file)
+{
+    TableReader top(root, "scene", file);
+    DemScene scene;
+    dem::World& world = scene.world;
+
+    auto simulation = top.table("simulation");
+    if (!simulation)
+        top.fail("simulation", "is missing: every scene needs a [simulation] table with dt and duration");
+    simulation->choice("type", "dem", {"dem", "fdem2d"});
+    scene.dt = simulation->requiredNumber("dt");
+    simulation->requirePositive("dt", scene.dt, "s");
+    scene.duration = simulation->requiredNumber("duration");
+    simulation->requirePositive("duration", scene.duration, "s");
+    scene.outputInterval = simulation->number("output_interval", scene.duration / 100);
+    simulation->requirePositive("output_interval", scene.outputInterval, "s");
+    world.gravity = simulation->vec3("gravity", {0, 0, -kStandardGravity});
+    if (auto skin = simulation->optionalNumber("skin"))
+    {
+        simulation->requirePositive("skin", *skin, "m");
+        world.neighbors.skin = *skin;
+    }
+    scene.maxOverlapFraction = simulation->number("max_overlap_fraction", 0.5);
+    simulation->requirePositive("max_overlap_fraction", scene.maxOverlapFraction, "");
+    const Real overlapTolerance = simulation->number("initial_overlap_tolerance", 0.01);
+    simulation->requireNonNegative("initial_overlap_tolerance", overlapTolerance, "");
+    scene.characteristicSpeed = simulation->number("characteristic_speed", 0.0);
+    simulation->requireNonNegative("characteristic_speed", scene.characteristicSpeed, "m/s");
+    scene.writeVtk = simulation->boolean("vtk", true);
+    simulation->finish();
+
+    auto materials = top.arrayOfTables("material");
+    if (materials.empty())
+        top.fail("material", "is missing: define at least one [[material]]");
+    for (auto& m : materials)
+        world.addMaterial(readMaterial(m));
+
+    for (auto& w : top.arrayOfTables("wall"))
+        world.walls.push_back(readWall(w, world));
+
+    Real maxSpeed = 0;
+    for (auto& s : top.arrayOfTables("sphere"))
+    {
+        const std::uint32_t material = world.materialId(s.requiredString("material"));
+        const Real radius = s.requiredNumber("radius");
+        s.requirePositive("radius", radius, "m");
+        const Vec3 x = s.requiredVec3("position");
+        const Vec3 v = s.vec3("velocity", {});
+        const Vec3 w = s.vec3("angular_velocity", {});
+        const std::string onWall = s.string("on_wall", "");
+        const bool noSlip = s.boolean("no_slip", false);
+        s.finish();
+        const std::uint32_t i =
+            world.particles.add(x, v, w, radius, world.materials[material].density, material);
+        maxSpeed = std::fmax(maxSpeed, length(v));
+        if (!onWall.empty())
+        {
+            const dem::Wall* wall = nullptr;
+            for (const auto& candidate : world.walls)
+                if (candidate.name == onWall)
+                    wall = &candidate;
+            if (!wall)
+                s.fail("on_wall", "names no [[wall]] (walls are matched by name)");
+            placeOnWall(world, i, *wall, noSlip, s);
+        }
+        else if (noSlip)
+            s.fail("no_slip", "needs on_wall = \"<wall name>\" to know which surface to roll on");
+    }
+    for (auto& f : top.arrayOfTables("particles"))
+        readParticleFile(f, world, file);
+    top.finish();
+
+    if (world.particles.size() == 0)
+        throw InputError(file + ": the scene has no particles ([[sphere]] or [[particles]])");
+    if (scene.characteristicSpeed == 0)
+        scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
+    checkInitialOverlaps(world, overlapTolerance);
+    return scene;
+}
+
+} // namespace veridem::io

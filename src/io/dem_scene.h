@@ -1,0 +1,29 @@
+// Reading a 3D DEM scene (TOML) into a World. Every key, its unit and default is documented in
+// docs/scene-format.md; unknown keys, wrong types and non-physical values are InputErrors that
+// name the file, the line and what was expected.
+#pragma once
+
+#include "dem/world.h"
+
+#include <toml++/toml.h>
+
+#include <string>
+
+namespace veridem::io
+{
+
+struct DemScene
+{
+    dem::World world;
+    Real dt = 0;                   // [s]
+    Real duration = 0;             // [s]
+    Real outputInterval = 0;       // [s]
+    Real maxOverlapFraction = 0.5; // blow-up threshold: overlap / radius [-]
+    Real characteristicSpeed = 1;  // [m/s], sizes the Hertz stiffness in the time-step estimate
+    bool writeVtk = true;
+};
+
+/// Builds the scene; `file` is used in messages and to resolve relative particle-file paths.
+DemScene readDemScene(const toml::table& root, const std::string& file);
+
+} // namespace veridem::io

@@ -1,0 +1,12 @@
+# Checks the verify --json shape: {"cases":[{"name","passed","quantities":[{"name","expected","measured","tolerance"}]}]}
+file(READ ${FILE} json)
+string(JSON name GET "${json}" cases 0 name)
+string(JSON passed GET "${json}" cases 0 passed)
+string(JSON qname GET "${json}" cases 0 quantities 0 name)
+string(JSON expected GET "${json}" cases 0 quantities 0 expected)
+string(JSON measured GET "${json}" cases 0 quantities 0 measured)
+string(JSON tolerance GET "${json}" cases 0 quantities 0 tolerance)
+if(NOT name STREQUAL "free_fall" OR NOT passed STREQUAL "ON")
+  message(FATAL_ERROR "unexpected JSON: ${json}")
+endif()
+message(STATUS "JSON ok: ${name} ${qname} expected=${expected} measured=${measured} tolerance=${tolerance}")

@@ -1,0 +1,129 @@
+// Each contact model function against its formula.
+#include "core/constants.h"
+#include "dem/contact_law.h"
+#include "dem/models/normal.h"
+#include "dem/models/rolling.h"
+#include "dem/models/tangential.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace veridem;
+using namespace veridem::dem;
+
+TEST(NormalModels, LinearIsSpringPlusDashpot)
+{
+    EXPECT_DOUBLE_EQ(linearNormalForce(1e5, 4.0, 1e-6, 0.0), 0.1);
+    EXPECT_DOUBLE_EQ(linearNormalForce(1e5, 4.0, 1e-6, 0.5), 0.1 + 2.0);
+}
+
+TEST(NormalModels, DampingRatioGivesRestitution)
+{
+    // e = exp(-pi zeta / sqrt(1 - zeta^2)) inverted; table of BENCHMARKS 2.1.
+    for (double e : {0.98, 0.9, 0.8, 0.5, 0.2})
+    {
+        const double zeta = dampingRatioFromRestitution(e);
+        EXPECT_NEAR(std::exp(-kPi * zeta / std::sqrt(1 - zeta * zeta)), e, 1e-14);
+    }
+    EXPECT_NEAR(dampingRatioFromRestitution(0.8), 0.07085, 5e-6);
+    EXPECT_EQ(dampingRatioFromRestitution(1.0), 0.0);
+}
+
+TEST(NormalModels, HertzForceAndStiffness)
+{
+    const double e = 1e9, r = 0.01, d = 1e-5;
+    EXPECT_DOUBLE_EQ(hertzElasticForce(e, r, d), 4.0 / 3.0 * e * std::sqrt(r) * std::pow(d, 1.5));
+    // Stiffness is the derivative of the force.
+    const double h = 1e-10;
+    EXPECT_NEAR(hertzNormalStiffness(e, r, d),
+                (hertzElasticForce(e, r, d + h) - hertzElasticForce(e, r, d - h)) / (2 * h),
+                1e-4 * hertzNormalStiffness(e, r, d));
+}
+
+TEST(Tangential, StickBelowCapIsSpringPlusDashpot)
+{
+    const Vec3 n{0, 0, 1};
+    const auto r = coulombSpringForce(100.0, 2.0, 0.5, 10.0, {1e-3, 0, 0}, n, {0.1, 0, 0}, 1e-3);
+    EXPECT_FALSE(r.sliding);
+    EXPECT_DOUBLE_EQ(r.spring.x, 1e-3 + 0.1 * 1e-3);
+    EXPECT_DOUBLE_EQ(r.force.x, -100.0 * r.spring.x - 2.0 * 0.1);
+}
+
+TEST(Tangential, SlidingIsCappedAndSpringResetToCap)
+{
+    const Vec3 n{0, 0, 1};
+    const Vec3 vt{1.0, 0, 0};
+    const auto r = coulombSpringForce(1e4, 0.5, 0.3, 2.0, {0.1, 0, 0}, n, vt, 1e-3);
+    EXPECT_TRUE(r.sliding);
+    EXPECT_NEAR(length(r.force), 0.3 * 2.0, 1e-15);
+    EXPECT_LT(r.force.x, 0);
+    // The dashpot sits inside the cap: -kt xi - etaT vt equals the capped force.
+    const Vec3 rebuilt = -1e4 * r.spring - 0.5 * vt;
+    EXPECT_NEAR(rebuilt.x, r.force.x, 1e-12);
+    // Sustained sliding keeps |Ft| = mu Fn.
+    const auto again = coulombSpringForce(1e4, 0.5, 0.3, 2.0, r.spring, n, vt, 1e-3);
+    EXPECT_NEAR(length(again.force), 0.6, 1e-15);
+}
+
+TEST(Tangential, ProjectionKeepsMagnitude)
+{
+    const Vec3 spring{1, 2, 3};
+    const Vec3 n = normalizedOrZero(Vec3{0.1, -0.2, 1});
+    const Vec3 p = projectSpringToTangentPlane(spring, n);
+    EXPECT_NEAR(length(p), length(spring), 1e-14);
+    EXPECT_NEAR(dot(p, n), 0, 1e-14);
+}
+
+TEST(Rolling, ConstantTorqueOpposesRelativeSpinWithMagnitudeMuRFn)
+{
+    const Vec3 w{0, 3, 4}; // |w| = 5, twisting part included
+    const Vec3 m = constantRollingTorque(1e-3, 2.0, w, 1.0, 1e-5);
+    EXPECT_NEAR(length(m), 2e-3, 1e-15);
+    EXPECT_NEAR(dot(m, w) / (length(m) * 5), -1.0, 1e-15);
+}
+
+TEST(Rolling, ConstantTorqueNeverReversesSpinInOneStep)
+{
+    // Rest treatment: tiny w is stopped, not reversed (no chatter).
+    const double inertia = 1e-7, dt = 1e-5;
+    const Vec3 w{1e-6, 0, 0};
+    const Vec3 m = constantRollingTorque(1.5e-6, 0.08, w, inertia, dt);
+    EXPECT_NEAR(length(m), inertia * 1e-6 / dt, 1e-20);
+    EXPECT_EQ(length(constantRollingTorque(1.5e-6, 0.08, {}, inertia, dt)), 0.0);
+}
+
+TEST(Rolling, EpsdSpringIsCapped)
+{
+    auto r = epsdRollingTorque(1.0, 0.0, 1e-3, 1.0, {}, {0, 0.1, 0}, 1e-3);
+    EXPECT_FALSE(r.fullyMobilised);
+    EXPECT_DOUBLE_EQ(r.torque.y, -1e-4);
+    r = epsdRollingTorque(1.0, 0.5, 1e-3, 1.0, {0, -0.99e-3, 0}, {0, 1.0, 0}, 1e-3);
+    EXPECT_TRUE(r.fullyMobilised);
+    EXPECT_NEAR(length(r.torque), 1e-3, 1e-15); // dashpot off once fully mobilised
+}
+
+TEST(ContactLaw, FrictionAndRollingCappedByNormalForce)
+{
+    PairParams p;
+    p.kn = 1e5;
+    p.ktRatio = 2.0 / 7.0;
+    p.dampingRatio = 0;
+    p.tangentialDampingRatio = 0;
+    p.mu = 0.2;
+    p.rollingModel = RollingModel::ConstantTorque;
+    p.rollingLength = 1e-4;
+    ContactInput in;
+    in.normal = {0, 0, 1};
+    in.overlap = 1e-6;
+    in.relativeVelocity = {5, 0, 0};
+    in.relativeAngularVelocity = {0, 7, 0};
+    in.effectiveMass = 1e-2;
+    in.spinInertia = in.rollingInertia = 1e-6;
+    ContactHistory h;
+    const ContactOutput out = evaluateContact(p, in, h, 1e-5);
+    EXPECT_DOUBLE_EQ(out.normalForce, 0.1);
+    EXPECT_NEAR(length(out.tangentialForce), 0.2 * 0.1, 1e-15);
+    EXPECT_NEAR(length(out.rollingTorque), 1e-4 * 0.1, 1e-18);
+    EXPECT_TRUE(out.sliding);
+}
