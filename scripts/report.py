@@ -172,8 +172,6 @@ def turntable_figure(out_dir, case, header, data):
             # Zoom on the orbit-centre path, like the paper's inset in Fig. 9.
             xs = np.concatenate([x, cx if cx is not None else x]) + s
             ys = np.concatenate([y, cy if cy is not None else y]) + s
-            lo, hi = min(xs.min(), ys.min(), 0.2), max(xs.max(), ys.max(), 0.2)
-            half = max(0.5 * (hi - lo), 0.01) * 1.08
             mx, my = 0.5 * (xs.min() + xs.max()), 0.5 * (ys.min() + ys.max())
             half = max(0.5 * (xs.max() - xs.min()), 0.5 * (ys.max() - ys.min()), 0.01) * 1.1
             ax.set_xlim(mx - half, mx + half)
@@ -313,26 +311,36 @@ def many_ball_figure(out_dir, case, name, header, data):
     return save(fig, out_dir, f"{case}_{name}")
 
 
-def sliding_block_figure(out_dir, case, name, header, data):
-    v = column(header, data, "v")
-    if v is None:
-        return None
+def sliding_block_figure(out_dir, case, named_series):
+    """Fig. 1: every sliding_block* series of a case in one plot (theory lines once per name)."""
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    order = np.argsort(v)
-    for c in header:
-        if c == "v":
+    drawn_theory = set()
+    drawn = False
+    for name, (header, data) in sorted(named_series.items()):
+        v = column(header, data, "v")
+        if v is None or data.shape[0] == 0:
             continue
-        y = column(header, data, c)
-        if "theory" in c or "analytic" in c:
-            ax.plot(v[order], y[order], color="k", lw=1.5, label=c)
-        elif c.startswith("L") or "dist" in c:
-            ax.plot(v[order], y[order], "o--", ms=5, lw=0.8, label=c)
+        order = np.argsort(v)
+        for c in header:
+            if c == "v":
+                continue
+            y = column(header, data, c)
+            if "theory" in c or "analytic" in c:
+                if c not in drawn_theory:
+                    ax.plot(v[order], y[order], color="k", lw=1.5, label=c)
+                    drawn_theory.add(c)
+            elif c.startswith("L") or "dist" in c:
+                ax.plot(v[order], y[order], "o--", ms=5, lw=0.8, label=f"{c} ({name})" if len(named_series) > 1 else c)
+            drawn = True
+    if not drawn:
+        plt.close(fig)
+        return None
     ax.set_xlabel("initial velocity v_i (m/s)")
     ax.set_ylabel("stop distance L (m)")
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=8)
     ax.set_title(f"Fig. 1: sliding block stop distance vs initial velocity ({case})", fontsize=10)
-    return save(fig, out_dir, f"{case}_{name}")
+    return save(fig, out_dir, f"{case}_sliding_block")
 
 
 def generic_figure(out_dir, case, name, header, data):
@@ -418,17 +426,22 @@ def main():
     if path:
         figures.append(("Concave dish (paper Figs. 10-12)", "Fig. 12", path))
 
-    # Everything else: many-ball paths, Fig. 1, generic plots.
+    # Fig. 1: all sliding_block* series of a case in one figure.
+    for case in sorted(series):
+        blocks = {n: s for n, s in series[case].items() if n.startswith("sliding_block") and "v" in s[0]}
+        if blocks:
+            path = sliding_block_figure(out_dir, case, blocks)
+            if path:
+                figures.append(("Sliding block (paper Fig. 1)", case, path))
+                used.update((case, n) for n in blocks)
+
+    # Everything else: many-ball paths, generic plots.
     for case in sorted(series):
         for name, (header, data) in sorted(series[case].items()):
             if (case, name) in used:
                 continue
             if any(re.fullmatch(r"x_\d+", c) for c in header):
                 path, section = many_ball_figure(out_dir, case, name, header, data), "Many balls"
-            elif name.startswith("sliding_block") or case.startswith("sliding_block"):
-                path, section = sliding_block_figure(out_dir, case, name, header, data), "Sliding block (paper Fig. 1)"
-                if path is None:
-                    path, section = generic_figure(out_dir, case, name, header, data), "Other series"
             else:
                 path, section = generic_figure(out_dir, case, name, header, data), "Other series"
             if path:
