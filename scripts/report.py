@@ -48,6 +48,7 @@ TURNTABLE_FIGURES = {
     "turntable_t1b_orbit": ("Fig. 3 (pushed)", "Test 1 with v0 = 0.107 m/s at 270°: orbit at 2Ω/7"),
     "turntable_t2_tilted": ("Fig. 4", "Test 2: Ω = 10 rad/s, tilt 0.17° toward 135°, v0 = 0.107 m/s at 270°, "
                             "r0 = 0.04 m at 180°, μr = 1.5e-6 m"),
+    "turntable_t2_k1e4": ("Fig. 4 (k = 1e4 N/m)", "Test 2 with the contact stiffness 1e4 N/m instead of 1e5 N/m"),
     "turntable_t3_tilted": ("Fig. 5", "Test 3: Ω = 17.6 rad/s, tilt 0.52° toward 90°, v0 = 0.008 m/s at 90°, "
                             "r0 = 0.01 m at 0°, μr = 1.5e-6 m"),
     "turntable_t3b_rolling_friction": ("Fig. 6", "Test 3 with μr = 2.5e-5 m"),
