@@ -61,6 +61,10 @@ TURNTABLE_FIGURES = {
     "turntable_radius_growth": ("", "Orbit centred on the axis growing at dρ/dt = V_r (Ω = 17.6 rad/s, μr = 1.5e-6 m)"),
 }
 
+# Axis labels for series columns a generic plot recognises (column name or prefix before "_").
+UNITS = {"t": "t (s)", "h": "height h (m)", "x": "x (m)", "y": "y (m)", "z": "z (m)", "v": "v (m/s)",
+         "omega": "Ω (rad/s)", "rho": "ρ (m)", "energy": "energy (J)"}
+
 CONVENTIONS = [
     "SI units throughout; angles in the table plane from east (+x) counter-clockwise; tables and dishes "
     "turn counter-clockwise seen from above.",
@@ -352,7 +356,10 @@ def generic_figure(out_dir, case, name, header, data):
     stride = max(1, data.shape[0] // 5000)
     for k, c in enumerate(header[1:9], start=1):
         ax.plot(x[::stride], data[::stride, k], lw=0.9, marker="o" if data.shape[0] < 30 else None, ms=3, label=c)
-    ax.set_xlabel(header[0])
+    ax.set_xlabel(UNITS.get(header[0], header[0]))
+    prefixes = {re.split(r"[_\d]", c)[0] for c in header[1:9]}
+    if len(prefixes) == 1:
+        ax.set_ylabel(UNITS.get(prefixes.pop(), ""))
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=8)
     ax.set_title(f"{case}: {name}", fontsize=10)
