@@ -41,6 +41,45 @@ void checkTimeStep(const io::DemScene& scene, const RunOptions& options)
             "veridem: warning: dt is more than tc/20: contacts are resolved by fewer than 20 steps\n");
 }
 
+/// Prints each material's rolling friction in both conventions (length and dimensionless) for
+/// the radii present, so the two are never confused.
+void printRollingFrictionConversion(const dem::World& world)
+{
+    for (std::uint32_t m = 0; m < world.materials.size(); ++m)
+    {
+        const dem::Material& material = world.materials[m];
+        if (material.rollingModel == dem::RollingModel::None)
+            continue;
+        Real smallest = 0, largest = 0;
+        for (std::size_t i = 0; i < world.particles.size(); ++i)
+            if (world.particles.material[i] == m)
+            {
+                const Real r = world.particles.radius[i];
+                smallest = smallest == 0 ? r : std::fmin(smallest, r);
+                largest = std::fmax(largest, r);
+            }
+        if (largest == 0)
+            continue;
+        const char* model = material.rollingModel == dem::RollingModel::Epsd ? "EPSD" : "constant torque";
+        if (material.rollingFrictionLength > 0)
+            std::fprintf(
+                stderr,
+                "veridem: material '%s': rolling friction (%s) mu_r = %.4g m = mu_r' * R with mu_r' = "
+                "%.4g (R = %.4g m) to %.4g (R = %.4g m) against a wall\n",
+                material.name.c_str(), model, material.rollingFrictionLength,
+                material.rollingFrictionLength / largest, largest, material.rollingFrictionLength / smallest,
+                smallest);
+        else
+            std::fprintf(
+                stderr,
+                "veridem: material '%s': rolling friction (%s) mu_r' = %.4g -> mu_r = mu_r' * R_r = %.4g m "
+                "(R_r = %.4g m, wall) to %.4g m (two spheres of R = %.4g m, R_r = R/2)\n",
+                material.name.c_str(), model, material.rollingFrictionDimensionless,
+                material.rollingFrictionDimensionless * largest, largest,
+                material.rollingFrictionDimensionless * smallest / 2, smallest);
+    }
+}
+
 } // namespace
 
 int runDemScene(const toml::table& table, const RunOptions& options)
@@ -48,6 +87,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     io::DemScene scene = io::readDemScene(table, options.sceneFile);
     dem::World& world = scene.world;
     checkTimeStep(scene, options);
+    printRollingFrictionConversion(world);
 
     io::ParticleRecorder recorder(options.outDir, scene.writeVtk);
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));

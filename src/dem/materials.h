@@ -4,7 +4,7 @@
 // Mixing rules (documented in docs/models.md):
 //   linear stiffness kn, kt: series springs, k = 2 k1 k2 / (k1 + k2)  (= k for equal materials)
 //   Hertz: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2,  1/G* = (2-nu1)/G1 + (2-nu2)/G2
-//   restitution e, friction mu, rolling friction: arithmetic mean (a [[pair]] entry overrides)
+//   restitution e, friction mu, rolling friction: arithmetic mean (a [[pair]] scene entry overrides)
 #pragma once
 
 #include "core/vec3.h"

@@ -2,6 +2,7 @@
 
 #include "core/constants.h"
 #include "core/error.h"
+#include "dem/models/normal.h"
 #include "dem/walls/wall.h"
 #include "io/toml_reader.h"
 
@@ -193,6 +194,80 @@ void readParticleFile(TableReader& t, dem::World& world, const std::string& scen
     }
 }
 
+/// Fills a box with spheres on a cubic lattice (optionally jittered, deterministic seed).
+void readLattice(TableReader& t, dem::World& world)
+{
+    const std::uint32_t material = world.materialId(t.requiredString("material"));
+    const Real radius = t.requiredNumber("radius");
+    t.requirePositive("radius", radius, "m");
+    const Vec3 lo = t.requiredVec3("min"), hi = t.requiredVec3("max");
+    const Real spacing = t.number("spacing", 2.2 * radius);
+    if (!(spacing >= 2 * radius))
+        t.fail("spacing", "must be >= 2 radius so the spheres do not overlap");
+    const Real jitter = t.number("jitter", 0.0);
+    if (!(jitter >= 0 && jitter <= 0.5 * (spacing - 2 * radius)))
+        t.fail("jitter", "must be in [0, (spacing - 2 radius)/2] m so the spheres do not overlap");
+    const Vec3 velocity = t.vec3("velocity", {});
+    t.finish();
+    if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
+        t.fail("max", "must be above 'min' in x, y and z");
+    auto count = [&](Real a, Real b)
+    { return static_cast<long>(std::floor((b - a - 2 * radius) / spacing)) + 1; };
+    const long nx = count(lo.x, hi.x), ny = count(lo.y, hi.y), nz = count(lo.z, hi.z);
+    if (nx <= 0 || ny <= 0 || nz <= 0)
+        t.fail("max", "the box is smaller than one sphere");
+    if (double(nx) * double(ny) * double(nz) > 2e7)
+        t.fail("spacing", "would create more than 2e7 spheres");
+    std::uint64_t state = 0x9E3779B97F4A7C15ull; // splitmix64: the same lattice on every machine
+    auto uniform = [&]()
+    {
+        state += 0x9E3779B97F4A7C15ull;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        z ^= z >> 31;
+        return double(z >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+    };
+    const Real density = world.materials[material].density;
+    for (long k = 0; k < nz; ++k)
+        for (long j = 0; j < ny; ++j)
+            for (long i = 0; i < nx; ++i)
+            {
+                Vec3 x{lo.x + radius + Real(i) * spacing, lo.y + radius + Real(j) * spacing,
+                       lo.z + radius + Real(k) * spacing};
+                x += jitter * Vec3{uniform(), uniform(), uniform()};
+                world.particles.add(x, velocity, {}, radius, density, material);
+            }
+}
+
+/// [[pair]]: explicit friction, restitution or rolling friction for one material pair.
+void applyPairOverride(TableReader& t, dem::World& world)
+{
+    const std::string a = t.requiredString("first"), b = t.requiredString("second");
+    const std::uint32_t ia = world.materialId(a), ib = world.materialId(b);
+    dem::PairParams params = world.pairs(ia, ib);
+    if (auto mu = t.optionalNumber("friction"))
+    {
+        t.requireNonNegative("friction", *mu, "");
+        params.mu = *mu;
+    }
+    if (auto e = t.optionalNumber("restitution"))
+    {
+        if (!(*e > 0 && *e <= 1))
+            t.fail("restitution", "must be in (0, 1]");
+        params.dampingRatio = params.hertzBeta = dem::dampingRatioFromRestitution(*e);
+    }
+    if (auto muR = t.optionalNumber("rolling_friction"))
+    {
+        t.requireNonNegative("rolling_friction", *muR, "m");
+        params.rollingLength = *muR;
+        params.rollingDimensionless = 0;
+    }
+    t.finish();
+    world.pairs.at(ia, ib) = params;
+    world.pairs.at(ib, ia) = params;
+}
+
 void checkInitialOverlaps(dem::World& world, Real tolerance)
 {
     dem::prepare(world);
@@ -263,6 +338,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     for (auto& m : materials)
         world.addMaterial(readMaterial(m));
 
+    auto pairs = top.arrayOfTables("pair");
     for (auto& w : top.arrayOfTables("wall"))
         world.walls.push_back(readWall(w, world));
 
@@ -296,13 +372,17 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     }
     for (auto& f : top.arrayOfTables("particles"))
         readParticleFile(f, world, file);
+    for (auto& l : top.arrayOfTables("lattice"))
+        readLattice(l, world);
     top.finish();
 
     if (world.particles.size() == 0)
-        throw InputError(file + ": the scene has no particles ([[sphere]] or [[particles]])");
+        throw InputError(file + ": the scene has no particles ([[sphere]], [[particles]] or [[lattice]])");
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
-    checkInitialOverlaps(world, overlapTolerance);
+    checkInitialOverlaps(world, overlapTolerance); // also builds the pair table
+    for (auto& pair : pairs)
+        applyPairOverride(pair, world);
     return scene;
 }
 

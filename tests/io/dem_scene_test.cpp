@@ -106,3 +106,26 @@ position = [0, 0, 0]
     EXPECT_NEAR(e.critical, 2 / omega * (std::sqrt(1 + zeta * zeta) - zeta), 1e-6 * e.critical);
     EXPECT_NEAR(e.contactTime, M_PI / (omega * std::sqrt(1 - zeta * zeta)), 1e-6 * e.contactTime);
 }
+
+TEST(DemScene, PairOverrideReplacesMixedValues)
+{
+    const io::DemScene s = load(kHeader + R"(
+[[material]]
+name = "rubber"
+density = 1100
+kn = 1e4
+friction = 0.9
+[[pair]]
+first = "steel"
+second = "rubber"
+friction = 0.6
+[[sphere]]
+material = "steel"
+radius = 0.01
+position = [0, 0, 0]
+)");
+    EXPECT_DOUBLE_EQ(s.world.pairs(0, 1).mu, 0.6);
+    EXPECT_DOUBLE_EQ(s.world.pairs(1, 0).mu, 0.6);
+    EXPECT_DOUBLE_EQ(s.world.pairs(0, 0).mu, 0.15);
+    EXPECT_DOUBLE_EQ(s.world.pairs(1, 1).mu, 0.9);
+}
