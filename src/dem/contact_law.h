@@ -116,12 +116,16 @@ inline ContactOutput evaluateContact(const PairParams& p, const ContactInput& in
     out.sliding = t.sliding;
     out.force = out.normalForce * in.normal + t.force;
 
-    // 3. Rolling resistance, capped by muR * Fn.
+    // 3. Rolling resistance, capped by muR * Fn. It opposes the whole relative angular velocity
+    // unless the pair opts out of twist resistance (PairParams::rollingTwist, see materials.h).
+    const Vec3 resistedAngularVelocity =
+        p.rollingTwist ? in.relativeAngularVelocity
+                       : in.relativeAngularVelocity - dot(in.relativeAngularVelocity, in.normal) * in.normal;
     if (p.rollingModel == RollingModel::ConstantTorque)
     {
         out.rollingTorque =
             constantRollingTorque(rollingFrictionLength(p, in.effectiveRadius), out.normalForce,
-                                  in.relativeAngularVelocity, in.spinInertia, dt);
+                                  resistedAngularVelocity, in.spinInertia, dt);
     }
     else if (p.rollingModel == RollingModel::Epsd)
     {
@@ -129,7 +133,7 @@ inline ContactOutput evaluateContact(const PairParams& p, const ContactInput& in
         const Real kr = 2.25 * c.kn * muR * muR;
         const Real cr = p.rollingDampingRatio * 2.0 * std::sqrt(in.rollingInertia * kr);
         const RollingSpringResult r = epsdRollingTorque(kr, cr, muR, out.normalForce, history.rollingSpring,
-                                                        in.relativeAngularVelocity, dt);
+                                                        resistedAngularVelocity, dt);
         history.rollingSpring = r.spring;
         out.rollingTorque = r.torque;
     }

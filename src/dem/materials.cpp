@@ -83,6 +83,7 @@ PairParams mixMaterials(const Material& a, const Material& b)
     p.rollingLength = 0.5 * (a.rollingFrictionLength + b.rollingFrictionLength);
     p.rollingDimensionless = 0.5 * (a.rollingFrictionDimensionless + b.rollingFrictionDimensionless);
     p.rollingDampingRatio = 0.5 * (a.rollingDampingRatio + b.rollingDampingRatio);
+    p.rollingTwist = a.rollingTwist && b.rollingTwist;
     return p;
 }
 

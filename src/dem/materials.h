@@ -52,6 +52,14 @@ struct Material
     Real rollingFrictionLength = 0;        // muR as a length [m] (the paper's convention)
     Real rollingFrictionDimensionless = 0; // muR' [-]; contact value muR = muR' * R_r
     Real rollingDampingRatio = 0.3;        // EPSD etaR [-]
+    // Which relative rotation the rolling torque opposes. true (default): all of
+    // w_rel = w_i - w_partner, twist about the contact normal included. A ball moving over a curved
+    // moving wall acquires spin about the normal from the geometry alone; if nothing resists that
+    // spin it keeps growing and its gyroscopic coupling holds the ball at a wrong equilibrium
+    // (BENCHMARKS 1c: a dish ball locks far below the stable height). false: only the part of w_rel
+    // perpendicular to the normal (pure rolling) is resisted; kept for the regression case
+    // dish_twist_regression that shows that failure. Pairs mix with AND (false wins).
+    bool rollingTwist = true;
 };
 
 /// Parameters of one material pair, ready for the force loop.
@@ -71,6 +79,7 @@ struct PairParams
     Real rollingLength = 0;        // [m]
     Real rollingDimensionless = 0; // [-]
     Real rollingDampingRatio = 0;  // [-]
+    bool rollingTwist = true;      // rolling torque also opposes twist about the normal
 };
 
 /// Mixes two materials into pair parameters (see the rules above).

@@ -19,11 +19,20 @@ CaseResult runStationary(const CaseContext& context)
     s.rollingFriction = 0;
     World world = turntableWorld(s);
     const Vec3 r0 = world.particles.position[0];
+    const TableFrame f = tableFrame(s);
     Real maxDeparture = 0;
+    Series path{
+        "trajectory", {"t", "x", "y", "x_theory", "y_theory"}, {{0, f.u(r0), f.v(r0), f.u(r0), f.v(r0)}}};
     runFor(world, 20.0, 1e-5, context, "turntable_t1a_stationary",
            [&](const World& w)
-           { maxDeparture = std::fmax(maxDeparture, length(w.particles.position[0] - r0)); });
+           {
+               const Vec3& x = w.particles.position[0];
+               maxDeparture = std::fmax(maxDeparture, length(x - r0));
+               if (w.stepCount % 1000 == 0)
+                   path.rows.push_back({w.time, f.u(x), f.v(x), f.u(r0), f.v(r0)});
+           });
     CaseResult r;
+    r.series.push_back(std::move(path));
     r.quantities.push_back(absoluteQuantity("max |r - r0| over 20 s", "m", 0, maxDeparture, 1e-6,
                                             "BENCHMARKS 1b T1a: a ball at rest with no-slip spin stays put"));
     return r;

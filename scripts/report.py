@@ -1,0 +1,523 @@
+#!/usr/bin/python3
+"""Draws the verification report: DIR/index.html with the summary table and PNG figures.
+
+Usage: report.py DIR RESULTS_JSON
+
+Called by `veridem verify --report DIR` after the cases ran. Inputs:
+  RESULTS_JSON          {"cases": [{"name", "summary", "reference", "passed", "seconds", "notes",
+                          "quantities": [{"name", "unit", "expected", "measured", "tolerance",
+                          "relative", "error", "passed", "why"}]}]}
+  DIR/data/<case>/<series>.csv   time series written by the cases (header line, then numbers)
+
+Figures it knows (everything else is drawn as a plain line plot, so new cases appear without
+editing this script):
+  turntable_*/trajectory.csv   paper Figs. 3-9: ball path and orbit centre in the paper's
+                               0.4 m x 0.4 m frame (table centre at (0.2, 0.2)), DEM over theory
+  dish_*/trajectory.csv        Figs. 10-11 (x-y) and h(t); dish_*/dish_final.csv -> Fig. 12
+  */trajectories.csv with x_0, y_0, ... columns   many-ball paths (Liquid Reflections)
+  sliding_block*.csv with a column v and L_* columns   Fig. 1, stop distance vs initial velocity
+
+Only the Python standard library, numpy and matplotlib (Debian python3-matplotlib, Agg backend).
+"""
+
+import csv
+import html
+import json
+import math
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+GRAVITY = 9.81
+DISH_RADIUS = 20.0
+DISH_BALL_RADIUS = 3e-3
+DISH_MU_R_PRIME = 5e-5 / DISH_BALL_RADIUS
+TABLE_RADIUS = 0.2
+FRAME_CENTRE = 0.2  # the paper draws the table centre at (0.2, 0.2) m
+
+# Paper figure numbers and captions for the turntable cases (others are drawn without a number).
+TURNTABLE_FIGURES = {
+    "turntable_t1a_stationary": ("Fig. 3", "Test 1 as captioned: Ω = 10 rad/s, flat, v0 = 0, r0 = 0.04 m at 180°, μr = 0 "
+                                 "(the ball stays put)"),
+    "turntable_t1b_orbit": ("Fig. 3 (pushed)", "Test 1 with v0 = 0.107 m/s at 270°: orbit at 2Ω/7"),
+    "turntable_t2_tilted": ("Fig. 4", "Test 2: Ω = 10 rad/s, tilt 0.17° toward 135°, v0 = 0.107 m/s at 270°, "
+                            "r0 = 0.04 m at 180°, μr = 1.5e-6 m"),
+    "turntable_t2_k1e4": ("Fig. 4 (k = 1e4 N/m)", "Test 2 with the contact stiffness 1e4 N/m instead of 1e5 N/m"),
+    "turntable_t3_tilted": ("Fig. 5", "Test 3: Ω = 17.6 rad/s, tilt 0.52° toward 90°, v0 = 0.008 m/s at 90°, "
+                            "r0 = 0.01 m at 0°, μr = 1.5e-6 m"),
+    "turntable_t3b_rolling_friction": ("Fig. 6", "Test 3 with μr = 2.5e-5 m"),
+    "turntable_t4_tilted": ("Fig. 7", "Test 4: Ω = 17.6 rad/s, tilt 0.17° toward 90°, v0 = 0.009 m/s at 270°, "
+                            "r0 = 0.13 m at 180°, μr = 1.5e-6 m"),
+    "turntable_t4b_flat": ("Fig. 8", "Test 4 with the table flat"),
+    "turntable_t5_tilt_0p10": ("Fig. 9", "Test 5 as captioned: Ω = 17.6 rad/s, tilt 0.10° toward 180°, v0 = 0, "
+                               "r0 = 0.08 m at 45°, μr = 1.5e-6 m"),
+    "turntable_t5_tilt_0p010": ("Fig. 9 (0.010°)", "Test 5 at 0.010° tilt: approach to a point near the centre"),
+    "turntable_radius_growth": ("", "Orbit centred on the axis growing at dρ/dt = V_r (Ω = 17.6 rad/s, μr = 1.5e-6 m)"),
+}
+
+# Axis labels for series columns a generic plot recognises (column name or prefix before "_").
+UNITS = {"t": "t (s)", "h": "height h (m)", "x": "x (m)", "y": "y (m)", "z": "z (m)", "v": "v (m/s)",
+         "omega": "Ω (rad/s)", "rho": "ρ (m)", "energy": "energy (J)"}
+
+CONVENTIONS = [
+    "SI units throughout; angles in the table plane from east (+x) counter-clockwise; tables and dishes "
+    "turn counter-clockwise seen from above.",
+    "Contact radius: a sphere-wall contact uses the undeformed radius as the lever arm and for the contact-point "
+    "velocity; a sphere-sphere contact splits the centre distance in proportion to the radii.",
+    "Rolling friction (type A, the paper's eq. 3): M = −μr F_n ω̂_rel, where ω_rel is the angular velocity "
+    "relative to the contact partner (the wall's own angular velocity for a turning wall), twist about the "
+    "normal included; μr is a length in m (μr' = μr/a is the dimensionless form).",
+    "Normal dashpot not clipped: the normal force may be slightly attractive just before separation, so e equals "
+    "the value set.",
+    "The wall's surface velocity is taken at the half-step contact point, consistent with the half-step "
+    "particle velocities of velocity Verlet.",
+]
+
+DECISIONS = [
+    "Flat-turntable stiffness k = 1.0e5 N/m (the paper's table is truncated), kt = 2/7 k.",
+    "Initial velocities in the captions are lab-frame; the no-slip start sets the spin so that the contact point "
+    "moves with the table, with zero spin about the table normal.",
+    "Test 1 is run twice: T1a literal (v0 = 0: the ball must stay put) and T1b (v0 = 0.107 m/s at 270°: the orbit "
+    "at 2Ω/7).",
+    "Test 2 uses the caption: 0.17° tilt, downhill toward 135°. Test 5 is run at the caption's 0.10° and at 0.010°.",
+    "Rolling friction opposes the angular velocity relative to the contact partner including twist; the dish "
+    "test without twist resistance locks at a wrong height (regression case dish_twist_regression).",
+]
+
+
+def read_series(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return [], np.zeros((0, 0))
+    header = rows[0]
+    data = []
+    for row in rows[1:]:
+        try:
+            data.append([float(v) if v not in ("", "nan") else math.nan for v in row])
+        except ValueError:
+            continue
+    array = np.array(data, dtype=float) if data else np.zeros((0, len(header)))
+    return header, array
+
+
+def column(header, data, name):
+    return data[:, header.index(name)] if name in header else None
+
+
+def fmt(value):
+    if value is None:
+        return "–"
+    if isinstance(value, bool):
+        return str(value)
+    if isinstance(value, (int, float)):
+        if not math.isfinite(value):
+            return "–"
+        if value == 0:
+            return "0"
+        return f"{value:.6g}"
+    return html.escape(str(value))
+
+
+def save(fig, out_dir, name):
+    path = os.path.join(out_dir, "figures", name + ".png")
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return "figures/" + name + ".png"
+
+
+def compass(ax):
+    """N/E/S/W marks around the paper's 0.4 m x 0.4 m frame."""
+    for label, x, y in (("N", 0.2, 0.388), ("S", 0.2, 0.012), ("E", 0.388, 0.2), ("W", 0.012, 0.2)):
+        ax.text(x, y, label, ha="center", va="center", fontsize=12, fontweight="bold",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+
+
+def turntable_figure(out_dir, case, header, data):
+    number, caption = TURNTABLE_FIGURES.get(case, ("", case))
+    x, y = column(header, data, "x"), column(header, data, "y")
+    if x is None or y is None:
+        return None
+    xt, yt = column(header, data, "x_theory"), column(header, data, "y_theory")
+    cx, cy = column(header, data, "cx"), column(header, data, "cy")
+    cxt, cyt = column(header, data, "cx_theory"), column(header, data, "cy_theory")
+    zoom = case.startswith("turntable_t5") or case in ("turntable_t4b_flat", "turntable_radius_growth")
+    fig, axes = plt.subplots(1, 2 if zoom else 1, figsize=(12.5 if zoom else 6.6, 6.2))
+    axes = np.atleast_1d(axes)
+    for k, ax in enumerate(axes):
+        s = FRAME_CENTRE
+        if xt is not None:
+            ax.plot(xt + s, yt + s, color="0.55", lw=2.4, label="ball, rigid-rolling theory (RK4)")
+        ax.plot(x + s, y + s, color="tab:blue", lw=0.7, label="ball, DEM")
+        if cxt is not None:
+            ax.plot(cxt + s, cyt + s, color="tab:orange", lw=3.0, alpha=0.6, label="orbit centre, theory")
+        if cx is not None:
+            ax.plot(cx + s, cy + s, color="tab:red", lw=0.9, ls="--", label="orbit centre c = r + k×v/ω_o, DEM")
+        ax.plot([x[0] + s], [y[0] + s], "o", color="k", ms=4, label="start")
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)  [paper: z]")
+        if k == 0:
+            circle = plt.Circle((s, s), TABLE_RADIUS, fill=False, color="0.3", lw=1)
+            ax.add_patch(circle)
+            ax.plot([s], [s], "+", color="0.3", ms=10)
+            ax.set_xlim(0, 0.4)
+            ax.set_ylim(0, 0.4)
+            ax.set_xticks(np.arange(0, 0.41, 0.05))
+            ax.set_yticks(np.arange(0, 0.41, 0.05))
+            compass(ax)
+            ax.grid(True, lw=0.3)
+        else:
+            # Zoom on the orbit-centre path, like the paper's inset in Fig. 9.
+            xs = np.concatenate([x, cx if cx is not None else x]) + s
+            ys = np.concatenate([y, cy if cy is not None else y]) + s
+            mx, my = 0.5 * (xs.min() + xs.max()), 0.5 * (ys.min() + ys.max())
+            half = max(0.5 * (xs.max() - xs.min()), 0.5 * (ys.max() - ys.min()), 0.01) * 1.1
+            ax.set_xlim(mx - half, mx + half)
+            ax.set_ylim(my - half, my + half)
+            ax.plot([s], [s], "+", color="0.3", ms=12)
+            ax.set_title("zoom (+ = table centre)")
+            ax.grid(True, lw=0.3)
+    axes[0].legend(loc="lower left", fontsize=7.5, framealpha=0.9)
+    fig.suptitle(f"{number + ': ' if number else ''}{caption}", fontsize=10)
+    return save(fig, out_dir, f"{case}_trajectory")
+
+
+def turntable_deviation_figure(out_dir, series):
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    drawn = False
+    for case, (header, data) in sorted(series.items()):
+        cx, cy = column(header, data, "cx"), column(header, data, "cy")
+        cxt, cyt = column(header, data, "cx_theory"), column(header, data, "cy_theory")
+        t = column(header, data, "t")
+        if cx is None or cxt is None:
+            continue
+        deviation = np.hypot(cx - cxt, cy - cyt)
+        ax.semilogy(t, np.maximum(deviation, 1e-13), lw=0.8, label=case.replace("turntable_", ""))
+        drawn = True
+    if not drawn:
+        plt.close(fig)
+        return None
+    ax.axhline(5e-4, color="k", ls=":", lw=1, label="tolerance 0.5 mm")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("|c_DEM − c_theory| (m)")
+    ax.set_title("Orbit-centre path: DEM vs rigid-rolling theory along the whole run")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=7.5, ncol=2)
+    return save(fig, out_dir, "turntable_centre_deviation")
+
+
+def dish_xy_figure(out_dir, case, header, data, title):
+    x, y = column(header, data, "x"), column(header, data, "y")
+    xt, yt = column(header, data, "x_theory"), column(header, data, "y_theory")
+    fig, ax = plt.subplots(figsize=(6.4, 6.2))
+    if xt is not None:
+        ax.plot(xt, yt, color="0.6", lw=2.2, label="rigid-rolling reference (from the end of the slide)")
+    ax.plot(x, y, color="tab:blue", lw=0.6, label="DEM")
+    ax.plot([x[0]], [y[0]], "o", color="k", ms=4, label="release (at rest)")
+    ax.plot([0], [0], "+", color="0.3", ms=10)
+    ax.set_aspect("equal")
+    span = max(np.nanmax(np.abs(x)), np.nanmax(np.abs(y))) * 1.1
+    ax.set_xlim(-span, span)
+    ax.set_ylim(-span, span)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=7.5, loc="lower left")
+    ax.set_title(title, fontsize=10)
+    return save(fig, out_dir, f"{case}_xy")
+
+
+def dish_height_figure(out_dir, series):
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    colours = plt.cm.viridis(np.linspace(0, 0.95, max(len(series), 1)))
+    for colour, (case, (header, data)) in zip(colours, sorted(series.items(), key=lambda kv: kv[0])):
+        t, h = column(header, data, "t"), column(header, data, "h")
+        ht = column(header, data, "h_theory")
+        if t is None or h is None:
+            continue
+        ax.plot(t, h, color=colour, lw=1.0, label=case.replace("dish_", ""))
+        if ht is not None:
+            ax.plot(t, ht, color=colour, lw=2.5, alpha=0.35)
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("height of the ball centre h (m)")
+    ax.set_title("Dish: h(t), DEM (thin) over the rigid-rolling reference (thick, faint)")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=7, ncol=3, loc="center right")
+    return save(fig, out_dir, "dish_height_vs_time")
+
+
+def fig12(out_dir, finals, regression):
+    if not finals:
+        return None
+    fig, ax = plt.subplots(figsize=(8.5, 5.5))
+    omega = np.linspace(0.05, 10.5, 2000)
+    rho_s = DISH_RADIUS - DISH_BALL_RADIUS
+    h_paper = np.where(omega ** 2 * DISH_RADIUS >= GRAVITY, DISH_RADIUS - GRAVITY / omega ** 2, 0.0)
+    h_c = np.where(omega ** 2 * rho_s >= GRAVITY, rho_s - GRAVITY / omega ** 2, 0.0)
+    cos_theta = np.clip(GRAVITY / (omega ** 2 * rho_s), 0, 1)
+    sin_theta = np.sqrt(1 - cos_theta ** 2)
+    band = np.where(sin_theta > 1e-3, rho_s * DISH_MU_R_PRIME / np.maximum(sin_theta, 1e-3), np.nan)
+    above = omega ** 2 * rho_s > GRAVITY
+    ax.fill_between(omega[above], (h_c - band)[above], h_c[above], color="tab:green", alpha=0.15,
+                    label="rolling-resistance band h_c* − Δh … h_c*")
+    ax.plot(omega, h_paper, color="k", lw=1.5, label="paper eq. 6: h = R − g/Ω² (0 below √(g/R))")
+    ax.plot(omega, h_c, color="tab:green", lw=1, ls="--", label="ball centre h_c* = R − a − g/Ω²")
+    for row in finals:
+        release = row.get("r_release", 1.0)
+        marker = "o" if abs(release - 1.0) < 1e-9 else "s"
+        ax.plot(row["omega"], row["h_final"], marker, color="tab:blue" if marker == "o" else "tab:purple", ms=7,
+                mfc="none" if marker == "s" else "tab:blue")
+    ax.plot([], [], "o", color="tab:blue", label="DEM, released at r = 1 m (mean of the last 20 s of 600 s)")
+    if any(abs(row.get("r_release", 1.0) - 1.0) > 1e-9 for row in finals):
+        ax.plot([], [], "s", color="tab:purple", mfc="none", label="DEM, released at r = 2 m")
+    if regression is not None:
+        ax.plot([regression[0]], [regression[1]], "x", color="tab:red", ms=9, mew=2,
+                label="no twist resistance (regression case): spurious lock")
+    ax.axvline(math.sqrt(GRAVITY / rho_s), color="0.5", lw=0.8, ls=":")
+    ax.text(math.sqrt(GRAVITY / rho_s) + 0.05, 1.0, "Ω_c", color="0.4")
+    ax.set_xlabel("dish angular velocity Ω (rad/s)")
+    ax.set_ylabel("final height h (m)")
+    ax.set_xlim(0, 10.5)
+    ax.set_ylim(-0.5, 21)
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=7.5, loc="lower right")
+    ax.set_title("Fig. 12: stable height of a ball in the rotating concave dish (R = 20 m)")
+    return save(fig, out_dir, "fig12_height_vs_omega")
+
+
+def many_ball_figure(out_dir, case, name, header, data):
+    xs = sorted((c for c in header if re.fullmatch(r"x_\d+", c)), key=lambda c: int(c[2:]))
+    if not xs:
+        return None
+    fig, ax = plt.subplots(figsize=(7, 6.6))
+    colours = plt.cm.tab10(np.arange(len(xs)) % 10)
+    for colour, xc in zip(colours, xs):
+        index = xc[2:]
+        x, y = column(header, data, xc), column(header, data, "y_" + index)
+        if y is None:
+            continue
+        ax.plot(x, y, color=colour, lw=0.6, label=f"ball {index}")
+        ax.plot([x[0]], [y[0]], "o", color=colour, ms=4)
+        ax.plot([x[-1]], [y[-1]], "s", color=colour, ms=5)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=7, loc="upper right", ncol=2)
+    frame = name.replace("trajectories", "").replace("_", " ").strip() or "lab frame"
+    ax.set_title(f"{case}: paths seen from above, {frame} (o start, □ end)", fontsize=10)
+    return save(fig, out_dir, f"{case}_{name}")
+
+
+def sliding_block_figure(out_dir, case, named_series):
+    """Fig. 1: every sliding_block* series of a case in one plot (theory lines once per name)."""
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    drawn_theory = set()
+    drawn = False
+    for name, (header, data) in sorted(named_series.items()):
+        v = column(header, data, "v")
+        if v is None or data.shape[0] == 0:
+            continue
+        order = np.argsort(v)
+        for c in header:
+            if c == "v":
+                continue
+            y = column(header, data, c)
+            if "theory" in c or "analytic" in c:
+                if c not in drawn_theory:
+                    ax.plot(v[order], y[order], color="k", lw=1.5, label=c)
+                    drawn_theory.add(c)
+            elif c.startswith("L") or "dist" in c:
+                ax.plot(v[order], y[order], "o--", ms=5, lw=0.8, label=f"{c} ({name})" if len(named_series) > 1 else c)
+            drawn = True
+    if not drawn:
+        plt.close(fig)
+        return None
+    ax.set_xlabel("initial velocity v_i (m/s)")
+    ax.set_ylabel("stop distance L (m)")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"Fig. 1: sliding block stop distance vs initial velocity ({case})", fontsize=10)
+    return save(fig, out_dir, f"{case}_sliding_block")
+
+
+def generic_figure(out_dir, case, name, header, data):
+    if data.shape[0] == 0 or data.shape[1] < 2:
+        return None
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    x = data[:, 0]
+    stride = max(1, data.shape[0] // 5000)
+    for k, c in enumerate(header[1:9], start=1):
+        ax.plot(x[::stride], data[::stride, k], lw=0.9, marker="o" if data.shape[0] < 30 else None, ms=3, label=c)
+    ax.set_xlabel(UNITS.get(header[0], header[0]))
+    prefixes = {re.split(r"[_\d]", c)[0] for c in header[1:9]}
+    if len(prefixes) == 1:
+        ax.set_ylabel(UNITS.get(prefixes.pop(), ""))
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"{case}: {name}", fontsize=10)
+    return save(fig, out_dir, f"{case}_{name}")
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__)
+        return 2
+    out_dir, json_path = sys.argv[1], sys.argv[2]
+    with open(json_path) as f:
+        results = json.load(f)
+    cases = results.get("cases", [])
+    data_dir = os.path.join(out_dir, "data")
+    os.makedirs(os.path.join(out_dir, "figures"), exist_ok=True)
+
+    # Load every series.
+    series = {}  # case -> {name: (header, data)}
+    for case in cases:
+        folder = os.path.join(data_dir, case["name"])
+        if not os.path.isdir(folder):
+            continue
+        for file in sorted(os.listdir(folder)):
+            if file.endswith(".csv"):
+                try:
+                    series.setdefault(case["name"], {})[file[:-4]] = read_series(os.path.join(folder, file))
+                except OSError:
+                    pass
+
+    figures = []  # (section, title, path)
+    used = set()
+    # Turntable, Figs. 3-9.
+    turntable = {c: s["trajectory"] for c, s in series.items() if c.startswith("turntable_") and "trajectory" in s}
+    order = list(TURNTABLE_FIGURES) + sorted(set(turntable) - set(TURNTABLE_FIGURES))
+    for case in order:
+        if case in turntable:
+            path = turntable_figure(out_dir, case, *turntable[case])
+            if path:
+                figures.append(("Flat turntable (paper Figs. 3-9)", case, path))
+                used.add((case, "trajectory"))
+    path = turntable_deviation_figure(out_dir, turntable)
+    if path:
+        figures.append(("Flat turntable (paper Figs. 3-9)", "whole-path comparison", path))
+
+    # Dish, Figs. 10-12.
+    dish = {c: s["trajectory"] for c, s in series.items() if c.startswith("dish_") and "trajectory" in s}
+    for case, title in (("dish_omega_0p5", "Fig. 10: Ω = 0.5 rad/s (< Ω_c), released at rest at r = 1 m, 180°"),
+                        ("dish_omega_0p9", "Fig. 11: Ω = 0.9 rad/s, released at rest at r = 1 m, 180°"),
+                        ("dish_twist_regression", "Ω = 0.9 rad/s without twist resistance: spurious lock")):
+        if case in dish:
+            path = dish_xy_figure(out_dir, case, *dish[case], title)
+            if path:
+                figures.append(("Concave dish (paper Figs. 10-12)", case, path))
+    for case in dish:
+        used.add((case, "trajectory"))
+    if dish:
+        figures.append(("Concave dish (paper Figs. 10-12)", "h(t)", dish_height_figure(out_dir, dish)))
+    finals = []
+    for case, s in series.items():
+        if "dish_final" in s:
+            header, data = s["dish_final"]
+            for row in data:
+                finals.append(dict(zip(header, row)))
+            used.add((case, "dish_final"))
+    regression = None
+    if "dish_twist_regression" in dish:
+        header, data = dish["dish_twist_regression"]
+        t, h = column(header, data, "t"), column(header, data, "h")
+        regression = (0.9, float(np.mean(h[t > t[-1] - 20])))
+    path = fig12(out_dir, finals, regression)
+    if path:
+        figures.append(("Concave dish (paper Figs. 10-12)", "Fig. 12", path))
+
+    # Fig. 1: all sliding_block* series of a case in one figure.
+    for case in sorted(series):
+        blocks = {n: s for n, s in series[case].items() if n.startswith("sliding_block") and "v" in s[0]}
+        if blocks:
+            path = sliding_block_figure(out_dir, case, blocks)
+            if path:
+                figures.append(("Sliding block (paper Fig. 1)", case, path))
+                used.update((case, n) for n in blocks)
+
+    # Everything else: many-ball paths, generic plots.
+    for case in sorted(series):
+        for name, (header, data) in sorted(series[case].items()):
+            if (case, name) in used:
+                continue
+            if any(re.fullmatch(r"x_\d+", c) for c in header):
+                path, section = many_ball_figure(out_dir, case, name, header, data), "Many balls"
+            else:
+                path, section = generic_figure(out_dir, case, name, header, data), "Other series"
+            if path:
+                figures.append((section, f"{case}: {name}", path))
+
+    write_html(out_dir, cases, figures)
+    print(f"report: {os.path.join(out_dir, 'index.html')} ({len(figures)} figures)")
+    return 0
+
+
+def write_html(out_dir, cases, figures):
+    passed = sum(1 for c in cases if c.get("passed"))
+    total_seconds = sum(c.get("seconds", 0) for c in cases)
+    out = []
+    w = out.append
+    w("<!DOCTYPE html><html><head><meta charset='utf-8'><title>veridem verification report</title><style>"
+      "body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}"
+      "table{border-collapse:collapse;font-size:12px;width:100%}td,th{border:1px solid #ccc;padding:3px 5px;"
+      "vertical-align:top}th{background:#eee}.pass{color:#070;font-weight:bold}.fail{color:#b00;font-weight:bold}"
+      "td.num{text-align:right;font-family:monospace;white-space:nowrap}.why{color:#555;font-size:11px}"
+      "figure{display:inline-block;margin:6px;vertical-align:top}figure img{max-width:620px;border:1px solid #ddd}"
+      "figcaption{font-size:12px;color:#444}.notes{font-size:12px;color:#333}</style></head><body>")
+    w("<h1>veridem verification report</h1>")
+    w("<p>Cases compare DEM runs with analytical solutions, after Xiang, Munjiza, Latham &amp; Guises, "
+      "<i>On the validation of DEM and FEM/DEM models in 2D and 3D</i>, and the specifications of BENCHMARKS.md. "
+      f"<b>{passed} of {len(cases)} cases passed</b>; the cases took {total_seconds:.1f} s in total.</p>")
+    w("<h2>Conventions</h2><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in CONVENTIONS) + "</ul>")
+    w("<h2>Decisions (BENCHMARKS.md)</h2><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in DECISIONS) + "</ul>")
+    w("<h2>Summary</h2><table><tr><th>case</th><th>quantity</th><th>theory</th><th>measured</th><th>error</th>"
+      "<th>tolerance</th><th>result</th><th>why this tolerance</th></tr>")
+    for c in cases:
+        quantities = c.get("quantities", [])
+        rows = max(len(quantities), 1)
+        head = (f"<td rowspan='{rows}'><b>{html.escape(c['name'])}</b><br><span class='why'>"
+                f"{html.escape(c.get('summary', ''))}<br>{html.escape(c.get('reference', ''))}<br>"
+                f"{c.get('seconds', 0):.2f} s</span></td>")
+        if not quantities:
+            msg = html.escape(c.get("error", "the case measured nothing"))
+            w(f"<tr>{head}<td colspan='5'>{msg}</td><td class='fail'>FAIL</td><td></td></tr>")
+            continue
+        for k, q in enumerate(quantities):
+            unit = f" [{html.escape(q.get('unit', ''))}]" if q.get("unit") else ""
+            kind = "rel." if q.get("relative") else "abs."
+            result = "<td class='pass'>PASS</td>" if q.get("passed") else "<td class='fail'>FAIL</td>"
+            w("<tr>" + (head if k == 0 else "") + f"<td>{html.escape(q['name'])}{unit}</td>"
+              f"<td class='num'>{fmt(q.get('expected'))}</td><td class='num'>{fmt(q.get('measured'))}</td>"
+              f"<td class='num'>{fmt(q.get('error'))}</td><td class='num'>{fmt(q.get('tolerance'))} {kind}</td>"
+              f"{result}<td class='why'>{html.escape(q.get('why', ''))}</td></tr>")
+    w("</table>")
+    w("<h2>Notes</h2>")
+    for c in cases:
+        notes = c.get("notes", [])
+        if c.get("error"):
+            notes = [f"ERROR: {c['error']}"] + notes
+        if notes:
+            w(f"<p class='notes'><b>{html.escape(c['name'])}</b></p><ul class='notes'>" +
+              "".join(f"<li>{html.escape(n)}</li>" for n in notes) + "</ul>")
+    section = None
+    for sec, title, path in figures:
+        if sec != section:
+            w(f"<h2>{html.escape(sec)}</h2>")
+            section = sec
+        w(f"<figure><a href='{path}'><img src='{path}' alt='{html.escape(title)}'></a>"
+          f"<figcaption>{html.escape(title)}</figcaption></figure>")
+    w("</body></html>")
+    with open(os.path.join(out_dir, "index.html"), "w") as f:
+        f.write("\n".join(out))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

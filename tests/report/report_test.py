@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+"""Smoke test of scripts/report.py on synthetic results: every kind of series it knows (turntable
+trajectory, dish trajectory and final heights, many-ball paths, sliding block) and one it does not
+know must give a figure, and index.html must list every case and quantity."""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+script = sys.argv[1]
+with tempfile.TemporaryDirectory() as out:
+    data = os.path.join(out, "data")
+
+    def series(case, name, header, rows):
+        os.makedirs(os.path.join(data, case), exist_ok=True)
+        with open(os.path.join(data, case, name + ".csv"), "w") as f:
+            f.write(",".join(header) + "\n")
+            for row in rows:
+                f.write(",".join(str(v) for v in row) + "\n")
+
+    t = [0.01 * i for i in range(400)]
+    series("turntable_t2_tilted", "trajectory",
+           ["t", "x", "y", "x_theory", "y_theory", "cx", "cy", "cx_theory", "cy_theory"],
+           [[s, 0.03 * math.cos(3 * s) - 0.001 * s, 0.03 * math.sin(3 * s), 0.03 * math.cos(3 * s) - 0.001 * s,
+             0.03 * math.sin(3 * s), -0.001 * s, 0, -0.001 * s, 1e-9] for s in t])
+    series("dish_omega_0p9", "trajectory", ["t", "x", "y", "h", "x_theory", "y_theory", "h_theory"],
+           [[s, s * math.cos(s), s * math.sin(s), 0.01 * s, "nan", "nan", "nan"] for s in t])
+    series("dish_omega_0p9", "dish_final", ["omega", "h_final", "h_c_star", "h_paper", "r_final", "h_theory_final",
+                                            "r_release"], [[0.9, 7.56, 7.886, 7.889, 15.9, 7.59, 1.0]])
+    series("liquid_reflections", "trajectories_dish_frame", ["t", "x_0", "y_0", "x_1", "y_1"],
+           [[s, math.cos(s), math.sin(s), -math.cos(s), -math.sin(s)] for s in t])
+    series("sliding_block_stop", "sliding_block_dt1e-7", ["v", "L_theory", "L_measured"],
+           [[v, v * v / (2 * 0.5 * 9.81), 1.01 * v * v / (2 * 0.5 * 9.81)] for v in (0.5, 1, 2, 3, 4, 5, 6)])
+    series("sliding_block_stop", "sliding_block_dt1e-8", ["v", "L_theory", "L_measured"],
+           [[v, v * v / (2 * 0.5 * 9.81), 1.001 * v * v / (2 * 0.5 * 9.81)] for v in (0.5, 1, 2, 3, 4, 5, 6)])
+    series("something_new", "energy", ["t", "kinetic", "potential"], [[s, s, 1 - s] for s in t])
+    quantity = {"name": "q", "unit": "m", "expected": 1.0, "measured": 1.0, "tolerance": 0.01, "relative": True,
+                "error": 0.0, "passed": True, "why": "because"}
+    cases = [{"name": n, "summary": "s", "reference": "r", "passed": True, "seconds": 0.1, "notes": ["a note"],
+              "quantities": [quantity]}
+             for n in ("turntable_t2_tilted", "dish_omega_0p9", "liquid_reflections", "sliding_block_stop",
+                       "something_new")]
+    cases.append({"name": "broken", "summary": "s", "reference": "r", "passed": False, "seconds": 0,
+                  "error": "it threw", "notes": [], "quantities": []})
+    json_path = os.path.join(data, "results.json")
+    with open(json_path, "w") as f:
+        json.dump({"cases": cases}, f)
+    subprocess.run(["/usr/bin/python3", script, out, json_path], check=True)
+    page = open(os.path.join(out, "index.html")).read()
+    for needle in ("turntable_t2_tilted", "broken", "it threw", "because", "Fig. 12", "FAIL", "PASS"):
+        assert needle in page, needle
+    figures = set(os.listdir(os.path.join(out, "figures")))
+    for expected in ("turntable_t2_tilted_trajectory.png", "dish_omega_0p9_xy.png", "fig12_height_vs_omega.png",
+                     "liquid_reflections_trajectories_dish_frame.png",
+                     "sliding_block_stop_sliding_block.png", "something_new_energy.png"):
+        assert expected in figures, (expected, sorted(figures))
+print("report smoke test: OK")
