@@ -23,6 +23,18 @@ struct StepHealth
     std::uint32_t firstNonFinite = 0;    // first particle that is not
 };
 
+/// Wall-clock time spent in each stage of step() [s], accumulated while `enabled` (off by
+/// default: reading the clock costs ~20 ns a stage, which a one-ball run would notice).
+struct StepProfile
+{
+    bool enabled = false;
+    double integration = 0;  // kick-drift, wall motion, kick
+    double neighbours = 0;   // rebuild test + Verlet list rebuild + history merge
+    double pairForces = 0;   // per-contact pair forces (stage 3)
+    double wallForces = 0;   // per-contact wall forces (stage 3)
+    double gather = 0;       // per-particle sums in a fixed order (stage 4)
+};
+
 /// Wall-contact history: one slot per (particle, wall), dense (walls are few).
 struct WallContacts
 {
@@ -41,6 +53,7 @@ struct World
     Real time = 0;              // [s]
     std::uint64_t stepCount = 0;
     StepHealth health;
+    StepProfile profile;
     bool prepared = false;
 
     /// Adds a material; returns its id.
