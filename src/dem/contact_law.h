@@ -3,6 +3,7 @@
 // contacts: a wall is a partner of infinite mass with a prescribed velocity and angular velocity.
 #pragma once
 
+#include "core/hot.h"
 #include "core/vec3.h"
 #include "dem/materials.h"
 #include "dem/models/normal.h"
@@ -49,7 +50,7 @@ struct ContactCoefficients
     Real kn = 0, kt = 0, etaN = 0, etaT = 0;
 };
 
-inline ContactCoefficients contactCoefficients(const PairParams& p, Real overlap, Real effectiveMass,
+VERIDEM_HOT_INLINE ContactCoefficients contactCoefficients(const PairParams& p, Real overlap, Real effectiveMass,
                                                Real effectiveRadius)
 {
     ContactCoefficients c;
@@ -77,10 +78,11 @@ inline Real rollingFrictionLength(const PairParams& p, Real rollingRadius)
     return p.rollingLength + p.rollingDimensionless * rollingRadius;
 }
 
-inline ContactOutput evaluateContact(const PairParams& p, const ContactInput& in, ContactHistory& history,
+VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const ContactInput& in, ContactHistory& history,
                                      Real dt)
 {
-    ContactOutput out;
+    // Built from locals and returned whole: a default-constructed `out` filled in field by field
+    // makes GCC zero it in memory first (rep stos) on every contact.
     const ContactCoefficients c = contactCoefficients(p, in.overlap, in.effectiveMass, in.effectiveRadius);
 
     // 1. Normal force.
@@ -104,21 +106,19 @@ inline ContactOutput evaluateContact(const PairParams& p, const ContactInput& in
     const Real dampingWeight = dashpotWeight * c.etaN;
     const Real halfStepOverMass = 0.5 * dt / in.effectiveMass;
     const Real normalSpeedEnd = (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
-    out.normalForce = elastic - dampingWeight * normalSpeedEnd;
+    const Real normalForce = elastic - dampingWeight * normalSpeedEnd;
 
     // 2. Tangential force, capped by mu * Fn.
     const Vec3 tangentialVelocity = in.relativeVelocity - normalSpeed * in.normal;
-    const TangentialResult t = coulombSpringForce(c.kt, c.etaT, p.mu, out.normalForce, history.tangentialSpring,
+    const TangentialResult t = coulombSpringForce(c.kt, c.etaT, p.mu, normalForce, history.tangentialSpring,
                                                   in.normal, tangentialVelocity, dt);
     history.tangentialSpring = t.spring;
-    out.tangentialForce = t.force;
-    out.sliding = t.sliding;
-    out.force = out.normalForce * in.normal + t.force;
 
     // 3. Rolling resistance, capped by muR * Fn.
+    Vec3 rollingTorque{};
     if (p.rollingModel == RollingModel::ConstantTorque)
     {
-        out.rollingTorque = constantRollingTorque(rollingFrictionLength(p, in.effectiveRadius), out.normalForce,
+        rollingTorque = constantRollingTorque(rollingFrictionLength(p, in.effectiveRadius), normalForce,
                                                   in.relativeAngularVelocity, in.spinInertia, dt);
     }
     else if (p.rollingModel == RollingModel::Epsd)
@@ -127,11 +127,11 @@ inline ContactOutput evaluateContact(const PairParams& p, const ContactInput& in
         const Real kr = 2.25 * c.kn * muR * muR;
         const Real cr = p.rollingDampingRatio * 2.0 * std::sqrt(in.rollingInertia * kr);
         const RollingSpringResult r =
-            epsdRollingTorque(kr, cr, muR, out.normalForce, history.rollingSpring, in.relativeAngularVelocity, dt);
+            epsdRollingTorque(kr, cr, muR, normalForce, history.rollingSpring, in.relativeAngularVelocity, dt);
         history.rollingSpring = r.spring;
-        out.rollingTorque = r.torque;
+        rollingTorque = r.torque;
     }
-    return out;
+    return ContactOutput{normalForce * in.normal + t.force, t.force, rollingTorque, normalForce, t.sliding};
 }
 
 } // namespace veridem::dem

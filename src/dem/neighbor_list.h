@@ -4,10 +4,18 @@
 // cubic cells of edge >= 2 r_max + skin and testing the 27 surrounding cells: O(N). The list is
 // kept sorted by (i, j) and rebuilt only when some particle has moved more than skin/2 since the
 // last build, so between rebuilds no pair can come into contact unseen. Each pair slot carries its
-// contact history (tangential spring, rolling spring); on a rebuild the new sorted list is merged
-// with the old one by key, so history survives rebuilds and pairs that separated are dropped
-// (Jolt's read-old/write-new contact cache; LAMMPS FixNeighHistory). History is also zeroed the
-// moment a contact opens (in the force loop), so a re-formed contact starts fresh.
+// contact history (tangential spring; rolling spring only when a rolling model keeps one); on a
+// rebuild the new sorted list is merged with the old one by key, so history survives rebuilds and
+// pairs that separated are dropped (Jolt's read-old/write-new contact cache; LAMMPS
+// FixNeighHistory). History is also zeroed the moment a contact opens (in the force loop), so a
+// re-formed contact starts fresh.
+//
+// Per-step outputs (STYLE 3.4). The force loop writes each slot's force and the torques on its two
+// particles into the slot's own entries (no races, any thread count); the gather then sums, for
+// each particle, the slots where it is the second particle (`secondSlots`, ascending slot order)
+// and then its own slots as first particle (contiguous, `firstStart`). Since the list is sorted by
+// (i, j), that is exactly ascending slot order: the same order, and so the same bits, as a serial
+// scatter loop over the slots, for any number of threads.
 #pragma once
 
 #include "core/vec3.h"
@@ -24,24 +32,48 @@ class NeighborList
 {
   public:
     Real skin = 0;  // extra search distance beyond touching [m]
+    bool keepRollingHistory = false;  // store a rolling spring per slot (EPSD rolling model in use)
 
-    std::vector<std::uint32_t> first;    // i of each pair (sorted, i < j)
-    std::vector<std::uint32_t> second;   // j of each pair
-    std::vector<ContactHistory> history; // per pair slot
+    std::vector<std::uint32_t> first;     // i of each pair (sorted, i < j)
+    std::vector<std::uint32_t> second;    // j of each pair
+    std::vector<Vec3> tangentialSpring;   // history per pair slot [m]
+    std::vector<Vec3> rollingSpring;      // history per pair slot [N m] (empty unless keepRollingHistory)
+
+    // Per-step outputs, one entry per slot (zero for slots not in contact).
+    std::vector<Vec3> force;           // on the first particle [N] (the second gets -force)
+    std::vector<Vec3> torqueOnFirst;   // [N m]
+    std::vector<Vec3> torqueOnSecond;  // [N m]
+
+    // Gather adjacency (CSR), rebuilt with the list.
+    std::vector<std::uint32_t> firstStart;   // slots [firstStart[p], firstStart[p+1]) have first == p
+    std::vector<std::uint32_t> secondStart;  // secondSlots[secondStart[p] .. secondStart[p+1]) have second == p
+    std::vector<std::uint32_t> secondSlots;  // ascending within each particle
 
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;
     /// Rebuilds the pair list, carrying history over by (i, j).
     void rebuild(const ParticleStore& particles);
 
+    /// History of slot k as the contact law takes it.
+    ContactHistory history(std::size_t k) const
+    {
+        return {tangentialSpring[k], keepRollingHistory ? rollingSpring[k] : Vec3{}};
+    }
+    void setHistory(std::size_t k, const ContactHistory& h)
+    {
+        tangentialSpring[k] = h.tangentialSpring;
+        if (keepRollingHistory)
+            rollingSpring[k] = h.rollingSpring;
+    }
+
     std::size_t size() const { return first.size(); }
     std::size_t rebuildCount() const { return rebuilds_; }
+    /// Bytes held by the list's arrays (capacity), for memory accounting.
+    std::size_t memoryBytes() const;
 
   private:
     std::vector<Vec3> positionAtBuild_;
-    std::vector<std::uint32_t> cellStart_, cellParticles_, cellOf_;
-    std::vector<std::uint32_t> newFirst_, newSecond_, scratch_;
-    std::vector<ContactHistory> newHistory_;
+    std::vector<std::uint32_t> cellStart_, cellParticles_, cellOf_, fill_;
     std::size_t rebuilds_ = 0;
 };
 

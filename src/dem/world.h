@@ -5,6 +5,7 @@
 #include "dem/materials.h"
 #include "dem/neighbor_list.h"
 #include "dem/particles.h"
+#include "dem/wall_contacts.h"
 #include "dem/walls/wall.h"
 
 #include <cstdint>
@@ -35,12 +36,6 @@ struct StepProfile
     double gather = 0;       // per-particle sums in a fixed order (stage 4)
 };
 
-/// Wall-contact history: one slot per (particle, wall), dense (walls are few).
-struct WallContacts
-{
-    std::vector<ContactHistory> history;  // index particle * wallCount + wall
-};
-
 struct World
 {
     ParticleStore particles;
@@ -48,7 +43,7 @@ struct World
     std::vector<Material> materials;
     PairTable pairs;
     NeighborList neighbors;
-    WallContacts wallContacts;
+    WallContactList wallContacts;
     Vec3 gravity{0, 0, -9.81};  // [m/s^2]
     Real time = 0;              // [s]
     std::uint64_t stepCount = 0;
