@@ -249,6 +249,12 @@ int main(int argc, char** argv)
         std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
                     world.neighbors.size(), static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
+        const auto touching = std::count_if(world.neighbors.force.begin(), world.neighbors.force.end(),
+                                            [](const Vec3& f) { return !(f == Vec3{}); });
+        const auto wallTouching = std::count_if(world.wallContacts.force.begin(), world.wallContacts.force.end(),
+                                                [](const Vec3& f) { return !(f == Vec3{}); });
+        std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n", touching,
+                    static_cast<double>(touching) / static_cast<double>(n), world.wallContacts.size(), wallTouching);
         std::printf("  kinetic energy after %ld steps %.9e J\n", o.steps, kineticEnergy(world));
         if (o.profile)
         {

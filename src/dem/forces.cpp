@@ -73,22 +73,36 @@ void computePairForces(World& world, Real dt)
         [&](int chunk, std::size_t begin, std::size_t end)
         {
             WorstOverlap local{0, 0, false};
+            // Pass 1: which slots touch (branch-free), and clear the slots that just opened.
+            std::uint32_t* touchingSlots = list.touchingScratch.data() + begin;
+            std::size_t touchingCount = 0;
             for (std::size_t k = begin; k < end; ++k)
             {
                 const std::uint32_t i = list.first[k], j = list.second[k];
-                const Vec3 separation = p.position[i] - p.position[j];
-                const Real ri = p.radius[i], rj = p.radius[j];
-                const Real touching = ri + rj;
-                const Real distance2 = lengthSquared(separation);
-                if (distance2 >= touching * touching)
+                const Real touching = p.radius[i] + p.radius[j];
+                const bool isTouching = lengthSquared(p.position[i] - p.position[j]) < touching * touching;
+                touchingSlots[touchingCount] = static_cast<std::uint32_t>(k);
+                touchingCount += isTouching;
+                if (!isTouching && list.mayBeActive[k])
                 {
                     // The contact opened (or never closed): forget it, contribute nothing.
                     list.setHistory(k, ContactHistory{});
                     list.force[k] = Vec3{};
                     list.torqueOnFirst[k] = Vec3{};
                     list.torqueOnSecond[k] = Vec3{};
-                    continue;
+                    list.mayBeActive[k] = 0;
                 }
+            }
+            // Pass 2: the contact law on the touching slots, in ascending slot order.
+            for (std::size_t t = 0; t < touchingCount; ++t)
+            {
+                const std::size_t k = touchingSlots[t];
+                const std::uint32_t i = list.first[k], j = list.second[k];
+                list.mayBeActive[k] = 1;
+                const Vec3 separation = p.position[i] - p.position[j];
+                const Real ri = p.radius[i], rj = p.radius[j];
+                const Real touching = ri + rj;
+                const Real distance2 = lengthSquared(separation);
                 const PairParams& params = world.pairs(p.material[i], p.material[j]);
                 const ExtraInputs extra = extraInputsFor(params);
                 const Real distance = std::sqrt(distance2);

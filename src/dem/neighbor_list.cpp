@@ -32,7 +32,7 @@ std::size_t NeighborList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
            bytes(torqueOnFirst) + bytes(torqueOnSecond) + bytes(firstStart) + bytes(secondStart) +
-           bytes(secondSlots) + bytes(positionAtBuild_) + bytes(cellStart_) + bytes(cellParticles_) +
+           bytes(secondSlots) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_) + bytes(cellStart_) + bytes(cellParticles_) +
            bytes(cellOf_) + bytes(fill_);
 }
 
@@ -53,6 +53,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
         torqueOnFirst.clear();
         torqueOnSecond.clear();
         secondSlots.clear();
+        mayBeActive.clear();
+        touchingScratch.clear();
         return;
     }
 
@@ -177,6 +179,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
     force.assign(pairCount, Vec3{});
     torqueOnFirst.assign(pairCount, Vec3{});
     torqueOnSecond.assign(pairCount, Vec3{});
+    mayBeActive.assign(pairCount, 1);
+    touchingScratch.resize(pairCount);
 
     // Gather adjacency: for each particle, the slots where it is second, ascending.
     for (std::size_t k = 0; k < pairCount; ++k)

@@ -44,6 +44,12 @@ class NeighborList
     std::vector<Vec3> torqueOnFirst;   // [N m]
     std::vector<Vec3> torqueOnSecond;  // [N m]
 
+    // Force-loop bookkeeping: whether the slot's outputs/history may be non-zero (cleared when the
+    // slot is found open, so an open slot is written once, not every step), and room for each
+    // chunk's list of touching slots.
+    std::vector<std::uint8_t> mayBeActive;
+    std::vector<std::uint32_t> touchingScratch;
+
     // Gather adjacency (CSR), rebuilt with the list.
     std::vector<std::uint32_t> firstStart;   // slots [firstStart[p], firstStart[p+1]) have first == p
     std::vector<std::uint32_t> secondStart;  // secondSlots[secondStart[p] .. secondStart[p+1]) have second == p

@@ -45,7 +45,7 @@ VERIDEM_HOT_INLINE TangentialResult coulombSpringForce(Real kt, Real etaT, Real 
 {
     spring = projectSpringToTangentPlane(spring, normal) + tangentialVelocity * dt;
     const Vec3 trial = -kt * spring - etaT * tangentialVelocity;
-    const Real cap = mu * std::fmax(normalForce, 0.0);
+    const Real cap = mu * (normalForce > 0 ? normalForce : 0.0);  // mu max(Fn, 0), NaN -> 0 like fmax (inlined)
     const Real trialLength2 = lengthSquared(trial);
     if (trialLength2 <= cap * cap)
         return {trial, spring, false};
