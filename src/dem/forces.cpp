@@ -18,6 +18,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#include <immintrin.h>
 
 namespace veridem::dem
 {
@@ -58,6 +61,240 @@ ExtraInputs extraInputsFor(const PairParams& params)
             params.rollingModel == RollingModel::ConstantTorque, params.rollingModel == RollingModel::Epsd};
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// Four contacts at a time (linear spring-dashpot, no rolling resistance: the reference bed's law).
+//
+// One contact is a chain of ~12 dependent divisions and square roots (normal, lever arms, m*, the
+// end-of-step normal speed, the spring rotation, the Coulomb cap), so a scalar loop waits on
+// latency. Here the same operations run on four independent contacts in the lanes of GCC vector
+// types (two SSE2 registers each, or one AVX register with VERIDEM_NATIVE): every lane performs
+// exactly the IEEE operations of evaluateContact() in the same order, branches become selects, so
+// the bits are those of the scalar path (tests/dem/contact_batch_test.cpp checks it). Contacts
+// with another law go through the scalar path.
+// ---------------------------------------------------------------------------------------------
+#if defined(__AVX__)
+using Lanes = double __attribute__((vector_size(32)));  // same type as __m256d
+using LaneMask = long long __attribute__((vector_size(32)));
+constexpr std::size_t kLanes = 4;
+inline Lanes laneSqrt(Lanes x) { return _mm256_sqrt_pd(x); }
+#else
+using Lanes = double __attribute__((vector_size(16)));  // same type as __m128d
+using LaneMask = long long __attribute__((vector_size(16)));
+constexpr std::size_t kLanes = 2;
+inline Lanes laneSqrt(Lanes x) { return _mm_sqrt_pd(x); }  // correctly rounded, as std::sqrt
+#endif
+
+/// True if pairs of these parameters may take the four-lane path.
+bool batchable(const PairParams& params)
+{
+    return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
+}
+
+constexpr std::size_t kBatch = 64;  // contacts per batch (a multiple of 4); ~25 KB of lanes, in L1
+
+/// Per-batch lanes: inputs are gathered here with scalar stores, read back as vectors long after
+/// (a vector load right after scalar stores to the same bytes misses store forwarding).
+struct PairBatch
+{
+    alignas(32) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
+    alignas(32) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
+    alignas(32) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
+    alignas(32) double effectiveMass[kBatch], halfStepOverMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch], mu[kBatch];
+    // outputs
+    alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch], t1x[kBatch], t1y[kBatch], t1z[kBatch];
+    alignas(32) double t2x[kBatch], t2y[kBatch], t2z[kBatch], springX[kBatch], springY[kBatch], springZ[kBatch];
+    alignas(32) double ratio[kBatch];
+    std::uint32_t i[kBatch];
+};
+
+inline bool anyLane(const LaneMask& mask)
+{
+    bool any = false;
+    for (std::size_t l = 0; l < kLanes; ++l)
+        any = any || mask[l] != 0;
+    return any;
+}
+
+inline bool allLanes(const LaneMask& mask)
+{
+    bool all = true;
+    for (std::size_t l = 0; l < kLanes; ++l)
+        all = all && mask[l] != 0;
+    return all;
+}
+
+inline Lanes load(const double* a)
+{
+    Lanes v;
+    std::memcpy(&v, a, sizeof v);
+    return v;
+}
+inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
+
+/// Evaluates the touching contacts of slots[0 .. count) (count <= kBatch, all batchable) and
+/// writes their outputs exactly as the scalar path does. Returns false (nothing written) if some
+/// contact needs the scalar path.
+[[gnu::noinline]] bool pairContactsBatch(const World& world, NeighborList& list, Real dt, const std::uint32_t* slots,
+                                         std::size_t count, WorstOverlap& worst, PairBatch& b)
+{
+    const ParticleStore& p = world.particles;
+    const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
+    for (std::size_t m = 0; m < padded; ++m)
+    {
+        // Padding lanes repeat the last contact; their results are not written.
+        const std::uint32_t k = slots[m < count ? m : count - 1];
+        const std::uint32_t i = list.first[k], j = list.second[k];
+        const PairParams& pp = world.pairs(p.material[i], p.material[j]);
+        if (!batchable(pp))
+            return false;
+        b.i[m] = i;
+        const Vec3 &xi = p.position[i], &xj = p.position[j], &vi = p.velocity[i], &vj = p.velocity[j];
+        const Vec3 &wi = p.angularVelocity[i], &wj = p.angularVelocity[j], &h = list.tangentialSpring[k];
+        b.sx[m] = xi.x - xj.x;
+        b.sy[m] = xi.y - xj.y;
+        b.sz[m] = xi.z - xj.z;
+        b.ri[m] = p.radius[i];
+        b.rj[m] = p.radius[j];
+        b.dvx[m] = vi.x - vj.x;
+        b.dvy[m] = vi.y - vj.y;
+        b.dvz[m] = vi.z - vj.z;
+        b.wix[m] = wi.x;
+        b.wiy[m] = wi.y;
+        b.wiz[m] = wi.z;
+        b.wjx[m] = wj.x;
+        b.wjy[m] = wj.y;
+        b.wjz[m] = wj.z;
+        b.effectiveMass[m] = list.effectiveMass[k];        // m_i m_j / (m_i + m_j), per slot
+        b.halfStepOverMass[m] = list.halfStepOverMass[k];  // (0.5 dt) / m*, per slot
+        b.hx[m] = h.x;
+        b.hy[m] = h.y;
+        b.hz[m] = h.z;
+        b.kn[m] = pp.kn;
+        b.ktRatio[m] = pp.ktRatio;
+        b.rate[m] = pp.dampingRate;
+        b.fromRatio[m] = 2.0 * pp.dampingRatio;
+        b.etaRatio[m] = pp.tangentialDampingRatio;
+        b.mu[m] = pp.mu;
+    }
+
+    const Lanes zero = {}, one = zero + 1.0;
+    const Lanes negativeZero = reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(zero) | (-0x7fffffffffffffffLL - 1));
+    for (std::size_t m = 0; m < padded; m += kLanes)
+    {
+        // Geometry (the scalar path in computePairForces).
+        const Lanes sx = load(b.sx + m), sy = load(b.sy + m), sz = load(b.sz + m);
+        const Lanes ri = load(b.ri + m), rj = load(b.rj + m);
+        const Lanes touching = ri + rj;
+        const Lanes distance2 = sx * sx + sy * sy + sz * sz;
+        const Lanes distance = laneSqrt(distance2);
+        const LaneMask positive = distance > zero;
+        const Lanes nx = positive ? sx / distance : zero;
+        const Lanes ny = positive ? sy / distance : zero;
+        const Lanes nz = positive ? sz / distance : one;
+        const Lanes overlap = touching - distance;
+        const Lanes leverI = ri * distance / touching, leverJ = rj * distance / touching;
+        const Lanes ax = load(b.wix + m) * leverI + load(b.wjx + m) * leverJ;
+        const Lanes ay = load(b.wiy + m) * leverI + load(b.wjy + m) * leverJ;
+        const Lanes az = load(b.wiz + m) * leverI + load(b.wjz + m) * leverJ;
+        const Lanes rvx = load(b.dvx + m) - (ay * nz - az * ny);
+        const Lanes rvy = load(b.dvy + m) - (az * nx - ax * nz);
+        const Lanes rvz = load(b.dvz + m) - (ax * ny - ay * nx);
+        const Lanes effectiveMass = load(b.effectiveMass + m);
+
+        // contactCoefficients(), linear branch.
+        const Lanes kn = load(b.kn + m);
+        const Lanes kt = load(b.ktRatio + m) * kn;
+        const Lanes rate = load(b.rate + m);
+        const LaneMask fromRate = rate >= zero;
+        Lanes etaN = rate * effectiveMass;
+        if (!allLanes(fromRate))  // damping from restitution: 2 zeta sqrt(m* kn)
+            etaN = fromRate ? etaN : load(b.fromRatio + m) * laneSqrt(effectiveMass * kn);
+        const Lanes etaT = load(b.etaRatio + m) * etaN;
+
+        // evaluateContact(): 1. normal force.
+        const Lanes normalSpeed = rvx * nx + rvy * ny + rvz * nz;
+        const Lanes elastic = kn * overlap;
+        const Lanes travel =
+            reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(normalSpeed) & 0x7fffffffffffffffLL) * dt;
+        // Divisions and roots are the bottleneck: those of rare branches run only if a lane takes them.
+        const LaneMask transition = overlap < travel;
+        Lanes dashpotWeight = one;
+        if (anyLane(transition))
+            dashpotWeight = transition ? 0.5 + overlap / travel : one;
+        const Lanes dampingWeight = dashpotWeight * etaN;
+        const Lanes halfStepOverMass = load(b.halfStepOverMass + m);
+        const Lanes normalSpeedEnd =
+            (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
+        const Lanes normalForce = elastic - dampingWeight * normalSpeedEnd;
+
+        // 2. coulombSpringForce().
+        const Lanes vtx = rvx - normalSpeed * nx, vty = rvy - normalSpeed * ny, vtz = rvz - normalSpeed * nz;
+        const Lanes hx = load(b.hx + m), hy = load(b.hy + m), hz = load(b.hz + m);
+        const Lanes oldLength2 = hx * hx + hy * hy + hz * hz;
+        const Lanes along = hx * nx + hy * ny + hz * nz;
+        const Lanes qx = hx - along * nx, qy = hy - along * ny, qz = hz - along * nz;
+        const Lanes newLength2 = qx * qx + qy * qy + qz * qz;
+        const Lanes lengthRatio = oldLength2 / newLength2;
+        const Lanes rescale = laneSqrt(lengthRatio);
+        const LaneMask keep = oldLength2 == zero, vanish = newLength2 == zero;
+        const Lanes px = keep ? hx : (vanish ? zero : qx * rescale);
+        const Lanes py = keep ? hy : (vanish ? zero : qy * rescale);
+        const Lanes pz = keep ? hz : (vanish ? zero : qz * rescale);
+        const Lanes springX = px + vtx * dt, springY = py + vty * dt, springZ = pz + vtz * dt;
+        const Lanes trialX = -kt * springX - etaT * vtx, trialY = -kt * springY - etaT * vty,
+                    trialZ = -kt * springZ - etaT * vtz;
+        const Lanes cap = load(b.mu + m) * (normalForce > zero ? normalForce : zero);
+        const Lanes trialLength2 = trialX * trialX + trialY * trialY + trialZ * trialZ;
+        const LaneMask sticks = trialLength2 <= cap * cap;
+        Lanes ftx = trialX, fty = trialY, ftz = trialZ, newSpringX = springX, newSpringY = springY,
+              newSpringZ = springZ;
+        if (!allLanes(sticks))
+        {
+            const Lanes slideScale = cap / laneSqrt(trialLength2);
+            const Lanes slideX = trialX * slideScale, slideY = trialY * slideScale, slideZ = trialZ * slideScale;
+            const LaneMask stiff = kt > zero;
+            ftx = sticks ? trialX : slideX;
+            fty = sticks ? trialY : slideY;
+            ftz = sticks ? trialZ : slideZ;
+            newSpringX = sticks ? springX : (stiff ? -(slideX + etaT * vtx) / kt : zero);
+            newSpringY = sticks ? springY : (stiff ? -(slideY + etaT * vty) / kt : zero);
+            newSpringZ = sticks ? springZ : (stiff ? -(slideZ + etaT * vtz) / kt : zero);
+        }
+        store(b.springX + m, newSpringX);
+        store(b.springY + m, newSpringY);
+        store(b.springZ + m, newSpringZ);
+        store(b.fx + m, normalForce * nx + ftx);
+        store(b.fy + m, normalForce * ny + fty);
+        store(b.fz + m, normalForce * nz + ftz);
+
+        // Torques (no rolling resistance: rollingTorque = +0 and its negative -0, as in the
+        // scalar path's  rollingTorque - leverI (n x Ft)  and  -rollingTorque - leverJ (n x Ft)).
+        const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
+        store(b.t1x + m, zero - leverI * ttx);
+        store(b.t1y + m, zero - leverI * tty);
+        store(b.t1z + m, zero - leverI * ttz);
+        store(b.t2x + m, negativeZero - leverJ * ttx);
+        store(b.t2y + m, negativeZero - leverJ * tty);
+        store(b.t2z + m, negativeZero - leverJ * ttz);
+        store(b.ratio + m, overlap / (rj < ri ? rj : ri));
+    }
+
+    for (std::size_t m = 0; m < count; ++m)
+    {
+        const std::uint32_t k = slots[m];
+        list.mayBeActive[k] = 1;
+        list.tangentialSpring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
+        list.force[k] = {b.fx[m], b.fy[m], b.fz[m]};
+        list.torqueOnFirst[k] = {b.t1x[m], b.t1y[m], b.t1z[m]};
+        list.torqueOnSecond[k] = {b.t2x[m], b.t2y[m], b.t2z[m]};
+        if (b.ratio[m] > worst.ratio)
+            worst = {b.ratio[m], b.i[m], true};
+    }
+    return true;
+}
+
 } // namespace
 
 void computePairForces(World& world, Real dt)
@@ -66,6 +303,12 @@ void computePairForces(World& world, Real dt)
     NeighborList& list = world.neighbors;
     world.health.maxOverlapRatio = 0;
     const std::size_t pairCount = list.size();
+    if (list.halfStepOverMassDt != dt)
+    {
+        // (0.5 dt) / m* per slot, the expression evaluateContact() uses, kept until dt changes.
+        parallelFor(pairCount, [&](std::size_t k) { list.halfStepOverMass[k] = 0.5 * dt / list.effectiveMass[k]; });
+        list.halfStepOverMassDt = dt;
+    }
     const int chunks = std::min(loopThreads(pairCount), kMaxChunks);
     WorstOverlap worst[kMaxChunks];
     parallelChunks(
@@ -94,9 +337,8 @@ void computePairForces(World& world, Real dt)
                 }
             }
             // Pass 2: the contact law on the touching slots, in ascending slot order.
-            for (std::size_t t = 0; t < touchingCount; ++t)
+            auto scalarContact = [&](std::size_t k)
             {
-                const std::size_t k = touchingSlots[t];
                 const std::uint32_t i = list.first[k], j = list.second[k];
                 list.mayBeActive[k] = 1;
                 const Vec3 separation = p.position[i] - p.position[j];
@@ -134,7 +376,21 @@ void computePairForces(World& world, Real dt)
                 const Real ratio = in.overlap / std::min(ri, rj);
                 if (ratio > local.ratio)
                     local = {ratio, i, true};
+            };
+            std::size_t t = 0;
+            if (world.batchedContactKernel)
+            {
+                PairBatch batch;
+                for (; t < touchingCount; t += kBatch)
+                {
+                    const std::size_t count = std::min(kBatch, touchingCount - t);
+                    if (!pairContactsBatch(world, list, dt, touchingSlots + t, count, local, batch))
+                        for (std::size_t l = t; l < t + count; ++l)
+                            scalarContact(touchingSlots[l]);
+                }
             }
+            for (; t < touchingCount; ++t)
+                scalarContact(touchingSlots[t]);
             worst[chunk] = local;
         });
     combine(world.health, worst, chunks);

@@ -32,7 +32,7 @@ std::size_t NeighborList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
            bytes(torqueOnFirst) + bytes(torqueOnSecond) + bytes(firstStart) + bytes(secondStart) +
-           bytes(secondSlots) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_) + bytes(cellStart_) + bytes(cellParticles_) +
+           bytes(secondSlots) + bytes(effectiveMass) + bytes(halfStepOverMass) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_) + bytes(cellStart_) + bytes(cellParticles_) +
            bytes(cellOf_) + bytes(fill_);
 }
 
@@ -55,6 +55,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
         secondSlots.clear();
         mayBeActive.clear();
         touchingScratch.clear();
+        effectiveMass.clear();
+        halfStepOverMass.clear();
         return;
     }
 
@@ -180,6 +182,14 @@ void NeighborList::rebuild(const ParticleStore& particles)
     torqueOnFirst.assign(pairCount, Vec3{});
     torqueOnSecond.assign(pairCount, Vec3{});
     mayBeActive.assign(pairCount, 1);
+    effectiveMass.resize(pairCount);
+    halfStepOverMass.resize(pairCount);
+    halfStepOverMassDt = -1;
+    for (std::size_t k = 0; k < pairCount; ++k)
+    {
+        const Real mi = particles.mass[first[k]], mj = particles.mass[second[k]];
+        effectiveMass[k] = mi * mj / (mi + mj);
+    }
     touchingScratch.resize(pairCount);
 
     // Gather adjacency: for each particle, the slots where it is second, ascending.

@@ -39,6 +39,13 @@ class NeighborList
     std::vector<Vec3> tangentialSpring;   // history per pair slot [m]
     std::vector<Vec3> rollingSpring;      // history per pair slot [N m] (empty unless keepRollingHistory)
 
+    // Per-slot constants of the linear law's hot path, set on a rebuild (same expressions as the
+    // contact law, so the same bits): m* = m_i m_j / (m_i + m_j) [kg], and (0.5 dt) / m* for the
+    // dt of halfStepOverMassDt [s/kg] (refreshed by the force loop when dt changes).
+    std::vector<Real> effectiveMass;
+    std::vector<Real> halfStepOverMass;
+    Real halfStepOverMassDt = -1;
+
     // Per-step outputs, one entry per slot (zero for slots not in contact).
     std::vector<Vec3> force;           // on the first particle [N] (the second gets -force)
     std::vector<Vec3> torqueOnFirst;   // [N m]

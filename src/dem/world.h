@@ -49,6 +49,8 @@ struct World
     std::uint64_t stepCount = 0;
     StepHealth health;
     StepProfile profile;
+    bool batchedContactKernel = true;  // four contacts at a time where the law allows (same bits as
+                                       // the scalar path, which false selects; forces.cpp)
     bool prepared = false;
 
     /// Adds a material; returns its id.
