@@ -85,7 +85,7 @@ constexpr std::size_t kLanes = 2;
 inline Lanes laneSqrt(Lanes x) { return _mm_sqrt_pd(x); }  // correctly rounded, as std::sqrt
 #endif
 
-/// True if pairs of these parameters may take the four-lane path.
+/// True if pairs of these parameters may take the four-lane path (all pairs must, or none does).
 bool batchable(const PairParams& params)
 {
     return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
@@ -106,7 +106,7 @@ struct PairBatch
     alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch], t1x[kBatch], t1y[kBatch], t1z[kBatch];
     alignas(32) double t2x[kBatch], t2y[kBatch], t2z[kBatch], springX[kBatch], springY[kBatch], springZ[kBatch];
     alignas(32) double ratio[kBatch];
-    std::uint32_t i[kBatch];
+    std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
 
 inline bool anyLane(const LaneMask& mask)
@@ -133,30 +133,34 @@ inline Lanes load(const double* a)
 }
 inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
 
-/// Evaluates the touching contacts of slots[0 .. count) (count <= kBatch, all batchable) and
-/// writes their outputs exactly as the scalar path does. Returns false (nothing written) if some
-/// contact needs the scalar path.
-[[gnu::noinline]] bool pairContactsBatch(const World& world, NeighborList& list, Real dt, const std::uint32_t* slots,
-                                         std::size_t count, WorstOverlap& worst, PairBatch& b)
+/// Evaluates the touching contacts in lanes [0, count) of `b` (count <= kBatch; slot, i, j and the
+/// separation and radii already collected by the caller; the law batchable) and writes their
+/// outputs exactly as the scalar path does. `uniform`: the pair parameters if there is a single
+/// material pair (skips the table look-up), else null.
+[[gnu::noinline]] void pairContactsBatch(const World& world, NeighborList& list, std::size_t count,
+                                         WorstOverlap& worst, PairBatch& b, const PairParams* uniform)
 {
     const ParticleStore& p = world.particles;
     const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
-    for (std::size_t m = 0; m < padded; ++m)
+    for (std::size_t m = count; m < padded; ++m)
     {
         // Padding lanes repeat the last contact; their results are not written.
-        const std::uint32_t k = slots[m < count ? m : count - 1];
-        const std::uint32_t i = list.first[k], j = list.second[k];
-        const PairParams& pp = world.pairs(p.material[i], p.material[j]);
-        if (!batchable(pp))
-            return false;
-        b.i[m] = i;
-        const Vec3 &xi = p.position[i], &xj = p.position[j], &vi = p.velocity[i], &vj = p.velocity[j];
+        b.slot[m] = b.slot[count - 1];
+        b.i[m] = b.i[count - 1];
+        b.j[m] = b.j[count - 1];
+        b.sx[m] = b.sx[count - 1];
+        b.sy[m] = b.sy[count - 1];
+        b.sz[m] = b.sz[count - 1];
+        b.ri[m] = b.ri[count - 1];
+        b.rj[m] = b.rj[count - 1];
+    }
+    const Real dt = list.halfStepOverMassDt;
+    for (std::size_t m = 0; m < padded; ++m)
+    {
+        const std::uint32_t k = b.slot[m], i = b.i[m], j = b.j[m];
+        const PairParams& pp = uniform ? *uniform : world.pairs(p.material[i], p.material[j]);
+        const Vec3 &vi = p.velocity[i], &vj = p.velocity[j];
         const Vec3 &wi = p.angularVelocity[i], &wj = p.angularVelocity[j], &h = list.tangentialSpring[k];
-        b.sx[m] = xi.x - xj.x;
-        b.sy[m] = xi.y - xj.y;
-        b.sz[m] = xi.z - xj.z;
-        b.ri[m] = p.radius[i];
-        b.rj[m] = p.radius[j];
         b.dvx[m] = vi.x - vj.x;
         b.dvy[m] = vi.y - vj.y;
         b.dvz[m] = vi.z - vj.z;
@@ -283,7 +287,7 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
 
     for (std::size_t m = 0; m < count; ++m)
     {
-        const std::uint32_t k = slots[m];
+        const std::uint32_t k = b.slot[m];
         list.mayBeActive[k] = 1;
         list.tangentialSpring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
         list.force[k] = {b.fx[m], b.fy[m], b.fz[m]};
@@ -292,7 +296,6 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         if (b.ratio[m] > worst.ratio)
             worst = {b.ratio[m], b.i[m], true};
     }
-    return true;
 }
 
 } // namespace
@@ -309,6 +312,11 @@ void computePairForces(World& world, Real dt)
         parallelFor(pairCount, [&](std::size_t k) { list.halfStepOverMass[k] = 0.5 * dt / list.effectiveMass[k]; });
         list.halfStepOverMassDt = dt;
     }
+    bool allBatchable = world.batchedContactKernel;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            allBatchable = allBatchable && batchable(world.pairs(a, b));
+    const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
     const int chunks = std::min(loopThreads(pairCount), kMaxChunks);
     WorstOverlap worst[kMaxChunks];
     parallelChunks(
@@ -316,6 +324,49 @@ void computePairForces(World& world, Real dt)
         [&](int chunk, std::size_t begin, std::size_t end)
         {
             WorstOverlap local{0, 0, false};
+            if (allBatchable)
+            {
+                // One pass: each touching slot is appended (branch-free) to a batch of lanes with
+                // its separation and radii, and the batch runs when full.
+                PairBatch batch;
+                std::size_t m = 0;
+                for (std::size_t k = begin; k < end; ++k)
+                {
+                    const std::uint32_t i = list.first[k], j = list.second[k];
+                    const Vec3 &xi = p.position[i], &xj = p.position[j];
+                    const Real ri = p.radius[i], rj = p.radius[j];
+                    const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
+                    const Real touching = ri + rj;
+                    const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
+                    batch.slot[m] = static_cast<std::uint32_t>(k);
+                    batch.i[m] = i;
+                    batch.j[m] = j;
+                    batch.sx[m] = sx;
+                    batch.sy[m] = sy;
+                    batch.sz[m] = sz;
+                    batch.ri[m] = ri;
+                    batch.rj[m] = rj;
+                    m += isTouching;
+                    if (!isTouching && list.mayBeActive[k])
+                    {
+                        // The contact opened (or never closed): forget it, contribute nothing.
+                        list.setHistory(k, ContactHistory{});
+                        list.force[k] = Vec3{};
+                        list.torqueOnFirst[k] = Vec3{};
+                        list.torqueOnSecond[k] = Vec3{};
+                        list.mayBeActive[k] = 0;
+                    }
+                    if (m == kBatch)
+                    {
+                        pairContactsBatch(world, list, m, local, batch, uniform);
+                        m = 0;
+                    }
+                }
+                if (m > 0)
+                    pairContactsBatch(world, list, m, local, batch, uniform);
+                worst[chunk] = local;
+                return;
+            }
             // Pass 1: which slots touch (branch-free), and clear the slots that just opened.
             std::uint32_t* touchingSlots = list.touchingScratch.data() + begin;
             std::size_t touchingCount = 0;
@@ -377,19 +428,7 @@ void computePairForces(World& world, Real dt)
                 if (ratio > local.ratio)
                     local = {ratio, i, true};
             };
-            std::size_t t = 0;
-            if (world.batchedContactKernel)
-            {
-                PairBatch batch;
-                for (; t < touchingCount; t += kBatch)
-                {
-                    const std::size_t count = std::min(kBatch, touchingCount - t);
-                    if (!pairContactsBatch(world, list, dt, touchingSlots + t, count, local, batch))
-                        for (std::size_t l = t; l < t + count; ++l)
-                            scalarContact(touchingSlots[l]);
-                }
-            }
-            for (; t < touchingCount; ++t)
+            for (std::size_t t = 0; t < touchingCount; ++t)
                 scalarContact(touchingSlots[t]);
             worst[chunk] = local;
         });
