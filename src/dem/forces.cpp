@@ -306,6 +306,8 @@ void computePairForces(World& world, Real dt)
     NeighborList& list = world.neighbors;
     world.health.maxOverlapRatio = 0;
     const std::size_t pairCount = list.size();
+    if (pairCount == 0)
+        return;
     if (list.halfStepOverMassDt != dt)
     {
         // (0.5 dt) / m* per slot, the expression evaluateContact() uses, kept until dt changes.
@@ -435,62 +437,79 @@ void computePairForces(World& world, Real dt)
     combine(world.health, worst, chunks);
 }
 
-void computeWallForces(World& world, Real dt)
+namespace
+{
+
+/// Wall slots [begin, end): the scalar contact law, outputs into the slots.
+WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt, std::size_t begin, std::size_t end)
 {
     const ParticleStore& p = world.particles;
+    WorstOverlap worst{0, 0, false};
+    for (std::size_t k = begin; k < end; ++k)
+    {
+        const std::uint32_t i = list.particle[k];
+        const Wall& wall = world.walls[list.wall[k]];
+        const Real r = p.radius[i];
+        const Vec3 position = p.position[i], velocity = p.velocity[i], angularVelocity = p.angularVelocity[i];
+        const WallGap gap = wallGap(wall, position, r);
+        if (!gap.touching)
+        {
+            list.setHistory(k, ContactHistory{});
+            list.force[k] = Vec3{};
+            list.torque[k] = Vec3{};
+            continue;
+        }
+        const PairParams& params = world.pairs(p.material[i], wall.material);
+        ContactInput in;
+        in.normal = gap.normal;
+        in.overlap = gap.overlap;
+        const Vec3 arm = -r * gap.normal;  // centre to contact point
+        // The particle's velocities are those of the half step t+dt/2, so the wall's surface
+        // velocity is taken at the contact point of the half step too (x - v dt/2). Using x(t+dt)
+        // would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball orbiting on a
+        // turntable would lose speed at a rate of order Omega v dt.
+        const Vec3 midStepContactPoint = position - (0.5 * dt) * velocity + arm;
+        in.relativeVelocity = velocity + cross(angularVelocity, arm) -
+                              wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
+        in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
+        in.effectiveMass = p.mass[i];
+        in.effectiveRadius = gap.effectiveRadius;
+        in.spinInertia = 1.0 / p.invInertia[i];
+        if (params.rollingModel == RollingModel::Epsd)
+            in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
+
+        ContactHistory history = list.history(k);
+        const ContactOutput out = evaluateContact(params, in, history, dt);
+        list.setHistory(k, history);
+        list.force[k] = out.force;
+        list.torque[k] = out.rollingTorque + cross(arm, out.tangentialForce);
+
+        const Real ratio = in.overlap / r;
+        if (ratio > worst.ratio)
+            worst = {ratio, i, true};
+    }
+    return worst;
+}
+
+} // namespace
+
+void computeWallForces(World& world, Real dt)
+{
     WallContactList& list = world.wallContacts;
     const std::size_t count = list.size();
+    if (count == 0)
+        return;
     const int chunks = std::min(loopThreads(count), kMaxChunks);
+    if (chunks == 1)
+    {
+        const WorstOverlap worst = wallContactRange(world, list, dt, 0, count);
+        combine(world.health, &worst, 1);
+        return;
+    }
     WorstOverlap worst[kMaxChunks];
-    parallelChunks(
-        count, chunks,
-        [&](int chunk, std::size_t begin, std::size_t end)
-        {
-            WorstOverlap local{0, 0, false};
-            for (std::size_t k = begin; k < end; ++k)
-            {
-                const std::uint32_t i = list.particle[k];
-                const Wall& wall = world.walls[list.wall[k]];
-                const Real r = p.radius[i];
-                const WallGap gap = wallGap(wall, p.position[i], r);
-                if (!gap.touching)
-                {
-                    list.setHistory(k, ContactHistory{});
-                    list.force[k] = Vec3{};
-                    list.torque[k] = Vec3{};
-                    continue;
-                }
-                const PairParams& params = world.pairs(p.material[i], wall.material);
-                ContactInput in;
-                in.normal = gap.normal;
-                in.overlap = gap.overlap;
-                const Vec3 arm = -r * gap.normal;  // centre to contact point
-                // The particle's velocities are those of the half step t+dt/2, so the wall's
-                // surface velocity is taken at the contact point of the half step too
-                // (x - v dt/2). Using x(t+dt) would add a spurious slip Omega |v| dt/2 on a
-                // rotating wall, and a ball orbiting on a turntable would lose speed at a rate of
-                // order Omega v dt.
-                const Vec3 midStepContactPoint = p.position[i] - (0.5 * dt) * p.velocity[i] + arm;
-                in.relativeVelocity = p.velocity[i] + cross(p.angularVelocity[i], arm) -
-                                      wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
-                in.relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
-                in.effectiveMass = p.mass[i];
-                in.effectiveRadius = gap.effectiveRadius;
-                in.spinInertia = 1.0 / p.invInertia[i];
-                in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
-
-                ContactHistory history = list.history(k);
-                const ContactOutput out = evaluateContact(params, in, history, dt);
-                list.setHistory(k, history);
-                list.force[k] = out.force;
-                list.torque[k] = out.rollingTorque + cross(arm, out.tangentialForce);
-
-                const Real ratio = in.overlap / r;
-                if (ratio > local.ratio)
-                    local = {ratio, i, true};
-            }
-            worst[chunk] = local;
-        });
+    parallelChunks(count, chunks,
+                   [&](int chunk, std::size_t begin, std::size_t end)
+                   { worst[chunk] = wallContactRange(world, list, dt, begin, end); });
     combine(world.health, worst, chunks);
 }
 

@@ -27,12 +27,36 @@ inline void kickDrift(ParticleStore& p, const Vec3& gravity, Real dt)
                 });
 }
 
+inline void recordFirstNonFinite(const ParticleStore& p, StepHealth& health)
+{
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (!isFinite(p.position[i]) || !isFinite(p.velocity[i]) || !isFinite(p.angularVelocity[i]))
+        {
+            health.firstNonFinite = static_cast<std::uint32_t>(i);
+            return;
+        }
+}
+
 /// v += dt/2 a; w += dt/2 alpha; records the first non-finite particle in `health`.
 inline void kick(ParticleStore& p, const Vec3& gravity, Real dt, StepHealth& health)
 {
     const Real half = 0.5 * dt;
     const std::size_t n = p.size();
     const int chunks = std::min(loopThreads(n), 64);
+    if (chunks == 1)
+    {
+        bool finite = true;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+            p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+            finite = finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) && isFinite(p.angularVelocity[i]);
+        }
+        health.finite = finite;
+        if (!finite)
+            recordFirstNonFinite(p, health);
+        return;
+    }
     bool chunkFinite[64];
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
@@ -50,12 +74,7 @@ inline void kick(ParticleStore& p, const Vec3& gravity, Real dt, StepHealth& hea
     const bool finite = std::all_of(chunkFinite, chunkFinite + chunks, [](bool b) { return b; });
     health.finite = finite;
     if (!finite)
-        for (std::size_t i = 0; i < n; ++i)
-            if (!isFinite(p.position[i]) || !isFinite(p.velocity[i]) || !isFinite(p.angularVelocity[i]))
-            {
-                health.firstNonFinite = static_cast<std::uint32_t>(i);
-                break;
-            }
+        recordFirstNonFinite(p, health);
 }
 
 /// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry

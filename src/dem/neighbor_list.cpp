@@ -14,9 +14,16 @@ bool NeighborList::needsRebuild(const ParticleStore& particles) const
         return true;
     const Real limit2 = 0.25 * skin * skin;
     const std::size_t n = particles.size();
-    const int chunks = loopThreads(n);
-    bool moved[64] = {};
-    parallelChunks(n, std::min(chunks, 64),
+    const int chunks = std::min(loopThreads(n), 64);
+    if (chunks == 1)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+            if (lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2)
+                return true;
+        return false;
+    }
+    bool moved[64];
+    parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
                    {
                        bool any = false;
@@ -24,7 +31,7 @@ bool NeighborList::needsRebuild(const ParticleStore& particles) const
                            any |= lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2;
                        moved[c] = any;
                    });
-    return std::any_of(moved, moved + 64, [](bool b) { return b; });
+    return std::any_of(moved, moved + chunks, [](bool b) { return b; });
 }
 
 std::size_t NeighborList::memoryBytes() const
