@@ -100,11 +100,11 @@ struct PairBatch
     alignas(32) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
     alignas(32) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
     alignas(32) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
-    alignas(32) double effectiveMass[kBatch], halfStepOverMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    alignas(32) double effectiveMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
     alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch], mu[kBatch];
     // outputs
-    alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch], t1x[kBatch], t1y[kBatch], t1z[kBatch];
-    alignas(32) double t2x[kBatch], t2y[kBatch], t2z[kBatch], springX[kBatch], springY[kBatch], springZ[kBatch];
+    alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch], ttx[kBatch], tty[kBatch], ttz[kBatch];
+    alignas(32) double leverI[kBatch], leverJ[kBatch], springX[kBatch], springY[kBatch], springZ[kBatch];
     alignas(32) double ratio[kBatch];
     std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
@@ -137,7 +137,7 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
 /// separation and radii already collected by the caller; the law batchable) and writes their
 /// outputs exactly as the scalar path does. `uniform`: the pair parameters if there is a single
 /// material pair (skips the table look-up), else null.
-[[gnu::noinline]] void pairContactsBatch(const World& world, NeighborList& list, std::size_t count,
+[[gnu::noinline]] void pairContactsBatch(const World& world, NeighborList& list, Real dt, std::size_t count,
                                          WorstOverlap& worst, PairBatch& b, const PairParams* uniform)
 {
     const ParticleStore& p = world.particles;
@@ -154,7 +154,6 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         b.ri[m] = b.ri[count - 1];
         b.rj[m] = b.rj[count - 1];
     }
-    const Real dt = list.halfStepOverMassDt;
     for (std::size_t m = 0; m < padded; ++m)
     {
         const std::uint32_t k = b.slot[m], i = b.i[m], j = b.j[m];
@@ -171,7 +170,6 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         b.wjy[m] = wj.y;
         b.wjz[m] = wj.z;
         b.effectiveMass[m] = list.effectiveMass[k];        // m_i m_j / (m_i + m_j), per slot
-        b.halfStepOverMass[m] = list.halfStepOverMass[k];  // (0.5 dt) / m*, per slot
         b.hx[m] = h.x;
         b.hy[m] = h.y;
         b.hz[m] = h.z;
@@ -184,7 +182,6 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
     }
 
     const Lanes zero = {}, one = zero + 1.0;
-    const Lanes negativeZero = reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(zero) | (-0x7fffffffffffffffLL - 1));
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         // Geometry (the scalar path in computePairForces).
@@ -228,7 +225,7 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         if (anyLane(transition))
             dashpotWeight = transition ? 0.5 + overlap / travel : one;
         const Lanes dampingWeight = dashpotWeight * etaN;
-        const Lanes halfStepOverMass = load(b.halfStepOverMass + m);
+        const Lanes halfStepOverMass = 0.5 * dt / effectiveMass;
         const Lanes normalSpeedEnd =
             (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
         const Lanes normalForce = elastic - dampingWeight * normalSpeedEnd;
@@ -273,15 +270,12 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         store(b.fy + m, normalForce * ny + fty);
         store(b.fz + m, normalForce * nz + ftz);
 
-        // Torques (no rolling resistance: rollingTorque = +0 and its negative -0, as in the
-        // scalar path's  rollingTorque - leverI (n x Ft)  and  -rollingTorque - leverJ (n x Ft)).
-        const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
-        store(b.t1x + m, zero - leverI * ttx);
-        store(b.t1y + m, zero - leverI * tty);
-        store(b.t1z + m, zero - leverI * ttz);
-        store(b.t2x + m, negativeZero - leverJ * ttx);
-        store(b.t2y + m, negativeZero - leverJ * tty);
-        store(b.t2z + m, negativeZero - leverJ * ttz);
+        // n x Ft and the lever arms; the gather forms the torques (no rolling resistance here).
+        store(b.ttx + m, ny * ftz - nz * fty);
+        store(b.tty + m, nz * ftx - nx * ftz);
+        store(b.ttz + m, nx * fty - ny * ftx);
+        store(b.leverI + m, leverI);
+        store(b.leverJ + m, leverJ);
         store(b.ratio + m, overlap / (rj < ri ? rj : ri));
     }
 
@@ -291,8 +285,9 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         list.mayBeActive[k] = 1;
         list.tangentialSpring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
         list.force[k] = {b.fx[m], b.fy[m], b.fz[m]};
-        list.torqueOnFirst[k] = {b.t1x[m], b.t1y[m], b.t1z[m]};
-        list.torqueOnSecond[k] = {b.t2x[m], b.t2y[m], b.t2z[m]};
+        list.tangentialTorque[k] = {b.ttx[m], b.tty[m], b.ttz[m]};
+        list.leverFirst[k] = b.leverI[m];
+        list.leverSecond[k] = b.leverJ[m];
         if (b.ratio[m] > worst.ratio)
             worst = {b.ratio[m], b.i[m], true};
     }
@@ -308,17 +303,13 @@ void computePairForces(World& world, Real dt)
     const std::size_t pairCount = list.size();
     if (pairCount == 0)
         return;
-    if (list.halfStepOverMassDt != dt)
-    {
-        // (0.5 dt) / m* per slot, the expression evaluateContact() uses, kept until dt changes.
-        parallelFor(pairCount, [&](std::size_t k) { list.halfStepOverMass[k] = 0.5 * dt / list.effectiveMass[k]; });
-        list.halfStepOverMassDt = dt;
-    }
     bool allBatchable = world.batchedContactKernel;
     for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
             allBatchable = allBatchable && batchable(world.pairs(a, b));
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
+    if (!allBatchable)
+        list.touchingScratch.resize(pairCount);  // the scalar path's per-chunk lists of touching slots
     const int chunks = std::min(loopThreads(pairCount), kMaxChunks);
     WorstOverlap worst[kMaxChunks];
     parallelChunks(
@@ -354,18 +345,19 @@ void computePairForces(World& world, Real dt)
                         // The contact opened (or never closed): forget it, contribute nothing.
                         list.setHistory(k, ContactHistory{});
                         list.force[k] = Vec3{};
-                        list.torqueOnFirst[k] = Vec3{};
-                        list.torqueOnSecond[k] = Vec3{};
+                        list.tangentialTorque[k] = Vec3{};
+                        if (list.keepRollingTorque)
+                            list.rollingTorque[k] = Vec3{};
                         list.mayBeActive[k] = 0;
                     }
                     if (m == kBatch)
                     {
-                        pairContactsBatch(world, list, m, local, batch, uniform);
+                        pairContactsBatch(world, list, dt, m, local, batch, uniform);
                         m = 0;
                     }
                 }
                 if (m > 0)
-                    pairContactsBatch(world, list, m, local, batch, uniform);
+                    pairContactsBatch(world, list, dt, m, local, batch, uniform);
                 worst[chunk] = local;
                 return;
             }
@@ -384,8 +376,9 @@ void computePairForces(World& world, Real dt)
                     // The contact opened (or never closed): forget it, contribute nothing.
                     list.setHistory(k, ContactHistory{});
                     list.force[k] = Vec3{};
-                    list.torqueOnFirst[k] = Vec3{};
-                    list.torqueOnSecond[k] = Vec3{};
+                    list.tangentialTorque[k] = Vec3{};
+                    if (list.keepRollingTorque)
+                        list.rollingTorque[k] = Vec3{};
                     list.mayBeActive[k] = 0;
                 }
             }
@@ -423,8 +416,11 @@ void computePairForces(World& world, Real dt)
 
                 const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce);  // n x Ft
                 list.force[k] = out.force;
-                list.torqueOnFirst[k] = out.rollingTorque - leverI * tangentialTorque;
-                list.torqueOnSecond[k] = -out.rollingTorque - leverJ * tangentialTorque;
+                list.tangentialTorque[k] = tangentialTorque;
+                list.leverFirst[k] = leverI;
+                list.leverSecond[k] = leverJ;
+                if (list.keepRollingTorque)
+                    list.rollingTorque[k] = out.rollingTorque;
 
                 const Real ratio = in.overlap / std::min(ri, rj);
                 if (ratio > local.ratio)
@@ -529,12 +525,14 @@ void gatherContactForces(World& world)
                     {
                         const std::uint32_t k = pairs.secondSlots[s];
                         force -= pairs.force[k];
-                        torque += pairs.torqueOnSecond[k];
+                        const Vec3 rolling = pairs.keepRollingTorque ? pairs.rollingTorque[k] : Vec3{};
+                        torque += -rolling - pairs.leverSecond[k] * pairs.tangentialTorque[k];
                     }
                     for (std::uint32_t k = pairs.firstStart[i]; k < pairs.firstStart[i + 1]; ++k)
                     {
                         force += pairs.force[k];
-                        torque += pairs.torqueOnFirst[k];
+                        const Vec3 rolling = pairs.keepRollingTorque ? pairs.rollingTorque[k] : Vec3{};
+                        torque += rolling - pairs.leverFirst[k] * pairs.tangentialTorque[k];
                     }
                     if (hasWalls)
                         for (std::uint32_t k = walls.start[i]; k < walls.start[i + 1]; ++k)

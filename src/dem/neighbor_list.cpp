@@ -38,9 +38,8 @@ std::size_t NeighborList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
-           bytes(torqueOnFirst) + bytes(torqueOnSecond) + bytes(firstStart) + bytes(secondStart) +
-           bytes(secondSlots) + bytes(effectiveMass) + bytes(halfStepOverMass) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_) + bytes(cellStart_) + bytes(cellParticles_) +
-           bytes(cellOf_) + bytes(fill_);
+           bytes(tangentialTorque) + bytes(leverFirst) + bytes(leverSecond) + bytes(rollingTorque) + bytes(firstStart) + bytes(secondStart) +
+           bytes(secondSlots) + bytes(effectiveMass) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -57,13 +56,14 @@ void NeighborList::rebuild(const ParticleStore& particles)
         tangentialSpring.clear();
         rollingSpring.clear();
         force.clear();
-        torqueOnFirst.clear();
-        torqueOnSecond.clear();
+        tangentialTorque.clear();
+        leverFirst.clear();
+        leverSecond.clear();
+        rollingTorque.clear();
         secondSlots.clear();
         mayBeActive.clear();
         touchingScratch.clear();
         effectiveMass.clear();
-        halfStepOverMass.clear();
         return;
     }
 
@@ -88,9 +88,9 @@ void NeighborList::rebuild(const ParticleStore& particles)
     auto coordinate = [&](Real value, Real origin, std::size_t count)
     { return std::min(static_cast<std::size_t>((value - origin) / cell), count - 1); };
 
-    // Counting sort of particles by cell (stable: ascending index within a cell).
-    cellStart_.assign(cellCount + 1, 0);
-    cellOf_.resize(n);
+    // Counting sort of particles by cell (stable: ascending index within a cell). The grid arrays
+    // live only during the rebuild (12 bytes per particle not held between rebuilds).
+    std::vector<std::uint32_t> cellStart_(cellCount + 1, 0), cellOf_(n), cellParticles_(n), fill_;
     for (std::size_t i = 0; i < n; ++i)
     {
         const Vec3& x = particles.position[i];
@@ -101,7 +101,6 @@ void NeighborList::rebuild(const ParticleStore& particles)
     }
     for (std::size_t c = 0; c < cellCount; ++c)
         cellStart_[c + 1] += cellStart_[c];
-    cellParticles_.resize(n);
     fill_.assign(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t i = 0; i < n; ++i)
         cellParticles_[fill_[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
@@ -186,18 +185,18 @@ void NeighborList::rebuild(const ParticleStore& particles)
     else
         rollingSpring.clear();
     force.assign(pairCount, Vec3{});
-    torqueOnFirst.assign(pairCount, Vec3{});
-    torqueOnSecond.assign(pairCount, Vec3{});
+    tangentialTorque.assign(pairCount, Vec3{});
+    leverFirst.assign(pairCount, 0.0);
+    leverSecond.assign(pairCount, 0.0);
+    rollingTorque.assign(keepRollingTorque ? pairCount : 0, Vec3{});
     mayBeActive.assign(pairCount, 1);
     effectiveMass.resize(pairCount);
-    halfStepOverMass.resize(pairCount);
-    halfStepOverMassDt = -1;
     for (std::size_t k = 0; k < pairCount; ++k)
     {
         const Real mi = particles.mass[first[k]], mj = particles.mass[second[k]];
         effectiveMass[k] = mi * mj / (mi + mj);
     }
-    touchingScratch.resize(pairCount);
+    touchingScratch.clear();  // sized by the scalar force path when it runs
 
     // Gather adjacency: for each particle, the slots where it is second, ascending.
     for (std::size_t k = 0; k < pairCount; ++k)

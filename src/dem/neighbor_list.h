@@ -39,17 +39,20 @@ class NeighborList
     std::vector<Vec3> tangentialSpring;   // history per pair slot [m]
     std::vector<Vec3> rollingSpring;      // history per pair slot [N m] (empty unless keepRollingHistory)
 
-    // Per-slot constants of the linear law's hot path, set on a rebuild (same expressions as the
-    // contact law, so the same bits): m* = m_i m_j / (m_i + m_j) [kg], and (0.5 dt) / m* for the
-    // dt of halfStepOverMassDt [s/kg] (refreshed by the force loop when dt changes).
+    // Per-slot effective mass m* = m_i m_j / (m_i + m_j) [kg], set on a rebuild (the contact law's
+    // expression, so the same bits), for the four-lane path.
     std::vector<Real> effectiveMass;
-    std::vector<Real> halfStepOverMass;
-    Real halfStepOverMassDt = -1;
 
     // Per-step outputs, one entry per slot (zero for slots not in contact).
     std::vector<Vec3> force;           // on the first particle [N] (the second gets -force)
-    std::vector<Vec3> torqueOnFirst;   // [N m]
-    std::vector<Vec3> torqueOnSecond;  // [N m]
+    // The torques are assembled by the gather: on the first particle  rolling - leverFirst (n x Ft),
+    // on the second  -rolling - leverSecond (n x Ft)  (lever arms l_i, l_j: forces.cpp). Storing
+    // the three parts costs 40 bytes per slot instead of 48 for two torques.
+    std::vector<Vec3> tangentialTorque;  // n x Ft [N m]
+    std::vector<Real> leverFirst;        // l_i [m]
+    std::vector<Real> leverSecond;       // l_j [m]
+    std::vector<Vec3> rollingTorque;     // on the first particle [N m] (empty unless keepRollingTorque)
+    bool keepRollingTorque = false;      // some pair has a rolling-resistance model
 
     // Force-loop bookkeeping: whether the slot's outputs/history may be non-zero (cleared when the
     // slot is found open, so an open slot is written once, not every step), and room for each
@@ -86,7 +89,6 @@ class NeighborList
 
   private:
     std::vector<Vec3> positionAtBuild_;
-    std::vector<std::uint32_t> cellStart_, cellParticles_, cellOf_, fill_;
     std::size_t rebuilds_ = 0;
 };
 

@@ -103,6 +103,11 @@ void prepare(World& world)
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
             rollingHistory = rollingHistory || world.pairs(a, b).rollingModel == RollingModel::Epsd;
     world.neighbors.keepRollingHistory = rollingHistory;
+    bool rollingTorque = false;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            rollingTorque = rollingTorque || world.pairs(a, b).rollingModel != RollingModel::None;
+    world.neighbors.keepRollingTorque = rollingTorque;
     world.wallContacts.keepRollingHistory = rollingHistory;
     rebuildContactLists(world);
     world.prepared = true;

@@ -111,7 +111,8 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
     EXPECT_TRUE(sameBits(batched.particles.velocity, scalar.particles.velocity));
     EXPECT_TRUE(sameBits(batched.particles.angularVelocity, scalar.particles.angularVelocity));
     EXPECT_TRUE(sameBits(batched.neighbors.tangentialSpring, scalar.neighbors.tangentialSpring));
-    EXPECT_TRUE(sameBits(batched.neighbors.torqueOnSecond, scalar.neighbors.torqueOnSecond));
+    EXPECT_TRUE(sameBits(batched.neighbors.tangentialTorque, scalar.neighbors.tangentialTorque));
+    EXPECT_TRUE(sameBits(batched.particles.torque, scalar.particles.torque));
     EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio);
 }
 
@@ -129,8 +130,9 @@ TEST(Determinism, GatherMatchesSerialScatterOrder)
     {
         force[pairs.first[k]] += pairs.force[k];
         force[pairs.second[k]] -= pairs.force[k];
-        torque[pairs.first[k]] += pairs.torqueOnFirst[k];
-        torque[pairs.second[k]] += pairs.torqueOnSecond[k];
+        // The pre-OpenMP loop: torque_i += rolling - l_i (n x Ft), torque_j += -rolling - l_j (n x Ft).
+        torque[pairs.first[k]] += Vec3{} - pairs.leverFirst[k] * pairs.tangentialTorque[k];
+        torque[pairs.second[k]] += -Vec3{} - pairs.leverSecond[k] * pairs.tangentialTorque[k];
     }
     const WallContactList& walls = world.wallContacts;
     for (std::size_t k = 0; k < walls.size(); ++k)
