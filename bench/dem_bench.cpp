@@ -246,6 +246,12 @@ int main(int argc, char** argv)
                     static_cast<double>(n) * static_cast<double>(o.steps) / cpu);
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
                     peak / 1e6, peak / static_cast<double>(n), (peak - residentBefore) / static_cast<double>(n));
+        const double particleBytes = static_cast<double>(
+            n * (4 * sizeof(Vec3) + sizeof(Vec3) + 4 * sizeof(Real) + sizeof(std::uint32_t)));
+        std::printf("  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",
+                    particleBytes / static_cast<double>(n),
+                    static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
+                    static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
         std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
                     world.neighbors.size(), static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);

@@ -279,15 +279,21 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         store(b.ratio + m, overlap / (rj < ri ? rj : ri));
     }
 
+    std::uint8_t* const mayBeActive = list.mayBeActive.data();  // (a byte store aliases anything:
+    Vec3* const spring = list.tangentialSpring.data();           //  array bases are kept in locals)
+    Vec3* const force = list.force.data();
+    Vec3* const tangentialTorque = list.tangentialTorque.data();
+    Real* const leverFirst = list.leverFirst.data();
+    Real* const leverSecond = list.leverSecond.data();
     for (std::size_t m = 0; m < count; ++m)
     {
         const std::uint32_t k = b.slot[m];
-        list.mayBeActive[k] = 1;
-        list.tangentialSpring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
-        list.force[k] = {b.fx[m], b.fy[m], b.fz[m]};
-        list.tangentialTorque[k] = {b.ttx[m], b.tty[m], b.ttz[m]};
-        list.leverFirst[k] = b.leverI[m];
-        list.leverSecond[k] = b.leverJ[m];
+        mayBeActive[k] = 1;
+        spring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
+        force[k] = {b.fx[m], b.fy[m], b.fz[m]};
+        tangentialTorque[k] = {b.ttx[m], b.tty[m], b.ttz[m]};
+        leverFirst[k] = b.leverI[m];
+        leverSecond[k] = b.leverJ[m];
         if (b.ratio[m] > worst.ratio)
             worst = {b.ratio[m], b.i[m], true};
     }
@@ -323,11 +329,18 @@ void computePairForces(World& world, Real dt)
                 // its separation and radii, and the batch runs when full.
                 PairBatch batch;
                 std::size_t m = 0;
+                // Array bases in locals: the byte-sized mayBeActive store below could otherwise
+                // alias the vectors' own pointers, which the compiler would reload every slot.
+                const std::uint32_t* const first = list.first.data();
+                const std::uint32_t* const second = list.second.data();
+                const Vec3* const position = p.position.data();
+                const Real* const radius = p.radius.data();
+                std::uint8_t* const mayBeActive = list.mayBeActive.data();
                 for (std::size_t k = begin; k < end; ++k)
                 {
-                    const std::uint32_t i = list.first[k], j = list.second[k];
-                    const Vec3 &xi = p.position[i], &xj = p.position[j];
-                    const Real ri = p.radius[i], rj = p.radius[j];
+                    const std::uint32_t i = first[k], j = second[k];
+                    const Vec3 &xi = position[i], &xj = position[j];
+                    const Real ri = radius[i], rj = radius[j];
                     const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
                     const Real touching = ri + rj;
                     const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
@@ -340,7 +353,7 @@ void computePairForces(World& world, Real dt)
                     batch.ri[m] = ri;
                     batch.rj[m] = rj;
                     m += isTouching;
-                    if (!isTouching && list.mayBeActive[k])
+                    if (!isTouching && mayBeActive[k])
                     {
                         // The contact opened (or never closed): forget it, contribute nothing.
                         list.setHistory(k, ContactHistory{});
@@ -348,7 +361,7 @@ void computePairForces(World& world, Real dt)
                         list.tangentialTorque[k] = Vec3{};
                         if (list.keepRollingTorque)
                             list.rollingTorque[k] = Vec3{};
-                        list.mayBeActive[k] = 0;
+                        mayBeActive[k] = 0;
                     }
                     if (m == kBatch)
                     {
