@@ -6,6 +6,8 @@
 #
 #   bench/run_reference.sh [BUILD_DIR] [STEPS]      (defaults: build/release, 10000)
 #
+# VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench also runs that build (e.g. an older commit)
+# on the bed (1 thread) and the turntable, for a before/after ratio in the same session.
 # OMP_WAIT_POLICY defaults to PASSIVE here: on a machine whose cores are busy with other work, a
 # spinning OpenMP thread waits a scheduler quantum at every barrier. On a quiet machine, run with
 # OMP_WAIT_POLICY=ACTIVE for the best two-thread figure.
@@ -24,7 +26,8 @@ python3 "$here/lammps/xyz_to_data.py" "$shared/settled_bed_20k.xyz" "$work/bed.d
 python3 "$here/lammps/xyz_to_data.py" "$shared/random_gas_20k.xyz" "$work/gas.data" 0.32
 
 rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
-  awk '/^Loop time of/ {printf "%.4g", $NF * $(NF-3) / $4}' "$1"
+  # "Loop time of T on P procs for N steps with M atoms"
+  awk '/^Loop time of/ {printf "%.4g", $12 * $9 / $4}' "$1"
 }
 
 echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_WAIT_POLICY=$OMP_WAIT_POLICY"
@@ -51,3 +54,10 @@ echo "== 1e6-sphere bed (the 20k bed tiled 7 x 7 = 980,000 spheres), 200 steps, 
 for n in 1 2; do "$bench" --tile 7 --steps 200 --threads "$n" | sed 's/^/   veridem /'; done
 echo "== one ball on a turntable, 3,000,000 steps"
 "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
+if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
+  echo "== baseline build $VERIDEM_BASELINE_BENCH: bed 1 thread, then turntable; this build again"
+  "$VERIDEM_BASELINE_BENCH" --steps "$steps" | sed 's/^/   baseline /'
+  "$bench" --steps "$steps" --threads 1 | sed 's/^/   veridem /'
+  "$VERIDEM_BASELINE_BENCH" --scene turntable --steps 3000000 | sed 's/^/   baseline /'
+  "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
+fi
