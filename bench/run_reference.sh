@@ -8,16 +8,17 @@
 #
 # VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench also runs that build (e.g. an older commit)
 # on the bed (1 thread) and the turntable, for a before/after ratio in the same session.
-# OMP_WAIT_POLICY defaults to PASSIVE here: on a machine whose cores are busy with other work, a
-# spinning OpenMP thread waits a scheduler quantum at every barrier. On a quiet machine, run with
-# OMP_WAIT_POLICY=ACTIVE for the best two-thread figure.
+# OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
+# default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
+# every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
+# halves the two-thread rate of short steps (the gas). Override either variable to compare.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
 build=${1:-$root/build/release}
 steps=${2:-10000}
 shared=${VERIDEM_SHARED_BENCH_DIR:-$root/../shared/bench}
-export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-PASSIVE}
+export GOMP_SPINCOUNT=${GOMP_SPINCOUNT:-20000}
 bench="$build/bench/veridem_bench"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -30,7 +31,7 @@ rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
   awk '/^Loop time of/ {printf "%.4g", $12 * $9 / $4}' "$1"
 }
 
-echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_WAIT_POLICY=$OMP_WAIT_POLICY"
+echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset} GOMP_SPINCOUNT=$GOMP_SPINCOUNT"
 for scene in bed gas; do
   for n in 1 2; do
     echo "== $scene, $n thread(s)/rank(s), $steps steps"
