@@ -1,5 +1,7 @@
 #include "dem/neighbor_list.h"
 
+#include "dem/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,24 +14,56 @@ bool NeighborList::needsRebuild(const ParticleStore& particles) const
         return true;
     const Real limit2 = 0.25 * skin * skin;
     const std::size_t n = particles.size();
-    for (std::size_t i = 0; i < n; ++i)
-        if (lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2)
-            return true;
-    return false;
+    const int chunks = std::min(loopThreads(n), 64);
+    if (chunks == 1)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+            if (lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2)
+                return true;
+        return false;
+    }
+    bool moved[64];
+    parallelChunks(n, chunks,
+                   [&](int c, std::size_t begin, std::size_t end)
+                   {
+                       bool any = false;
+                       for (std::size_t i = begin; i < end; ++i)
+                           any |= lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2;
+                       moved[c] = any;
+                   });
+    return std::any_of(moved, moved + chunks, [](bool b) { return b; });
+}
+
+std::size_t NeighborList::memoryBytes() const
+{
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
+           bytes(tangentialTorque) + bytes(leverFirst) + bytes(leverSecond) + bytes(rollingTorque) + bytes(firstStart) + bytes(secondStart) +
+           bytes(secondSlots) + bytes(effectiveMass) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
 {
     ++rebuilds_;
     const std::size_t n = particles.size();
-    positionAtBuild_ = particles.position;
-    newFirst_.clear();
-    newSecond_.clear();
+    positionAtBuild_.assign(particles.position.begin(), particles.position.end());
+    firstStart.assign(n + 1, 0);
+    secondStart.assign(n + 1, 0);
     if (n == 0)
     {
         first.clear();
         second.clear();
-        history.clear();
+        tangentialSpring.clear();
+        rollingSpring.clear();
+        force.clear();
+        tangentialTorque.clear();
+        leverFirst.clear();
+        leverSecond.clear();
+        rollingTorque.clear();
+        secondSlots.clear();
+        mayBeActive.clear();
+        touchingScratch.clear();
+        effectiveMass.clear();
         return;
     }
 
@@ -55,9 +89,9 @@ void NeighborList::rebuild(const ParticleStore& particles)
     auto coordinate = [&](Real value, Real origin, std::size_t count)
     { return std::min(static_cast<std::size_t>((value - origin) / cell), count - 1); };
 
-    // Counting sort of particles by cell.
-    cellStart_.assign(cellCount + 1, 0);
-    cellOf_.resize(n);
+    // Counting sort of particles by cell (stable: ascending index within a cell). The grid arrays
+    // live only during the rebuild (12 bytes per particle not held between rebuilds).
+    std::vector<std::uint32_t> cellStart_(cellCount + 1, 0), cellOf_(n), cellParticles_(n), fill_;
     for (std::size_t i = 0; i < n; ++i)
     {
         const Vec3& x = particles.position[i];
@@ -68,59 +102,112 @@ void NeighborList::rebuild(const ParticleStore& particles)
     }
     for (std::size_t c = 0; c < cellCount; ++c)
         cellStart_[c + 1] += cellStart_[c];
-    cellParticles_.resize(n);
-    {
-        std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-        for (std::size_t i = 0; i < n; ++i)
-            cellParticles_[fill[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
-    }
-
-    // For each i, all j > i within r_i + r_j + skin, in ascending j.
+    fill_.assign(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t i = 0; i < n; ++i)
-    {
-        const std::size_t c = cellOf_[i];
-        const std::size_t cx = c % nx, cy = (c / nx) % ny, cz = c / (nx * ny);
-        const Vec3 xi = particles.position[i];
-        const Real ri = particles.radius[i];
-        scratch_.clear();
-        for (std::size_t z = (cz ? cz - 1 : 0); z <= std::min(cz + 1, nz - 1); ++z)
-            for (std::size_t y = (cy ? cy - 1 : 0); y <= std::min(cy + 1, ny - 1); ++y)
-                for (std::size_t x = (cx ? cx - 1 : 0); x <= std::min(cx + 1, nx - 1); ++x)
-                {
-                    const std::size_t neighbour = (z * ny + y) * nx + x;
-                    for (std::uint32_t k = cellStart_[neighbour]; k < cellStart_[neighbour + 1]; ++k)
-                    {
-                        const std::uint32_t j = cellParticles_[k];
-                        if (j <= i)
-                            continue;
-                        const Real reach = ri + particles.radius[j] + skin;
-                        if (lengthSquared(xi - particles.position[j]) < reach * reach)
-                            scratch_.push_back(j);
-                    }
-                }
-        std::sort(scratch_.begin(), scratch_.end());
-        for (std::uint32_t j : scratch_)
-        {
-            newFirst_.push_back(static_cast<std::uint32_t>(i));
-            newSecond_.push_back(j);
-        }
-    }
+        cellParticles_[fill_[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
+
+    // For each i, all j > i within r_i + r_j + skin, in ascending j. Each chunk of particles
+    // (one per thread) collects its own pairs; the chunks are concatenated in order.
+    const int chunks = std::min(loopThreads(n), 64);
+    std::vector<std::vector<std::uint32_t>> chunkSecond(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks,
+                   [&](int chunk, std::size_t begin, std::size_t end)
+                   {
+                       std::vector<std::uint32_t>& out = chunkSecond[static_cast<std::size_t>(chunk)];
+                       std::vector<std::uint32_t> scratch;
+                       for (std::size_t i = begin; i < end; ++i)
+                       {
+                           const std::size_t c = cellOf_[i];
+                           const std::size_t cx = c % nx, cy = (c / nx) % ny, cz = c / (nx * ny);
+                           const Vec3 xi = particles.position[i];
+                           const Real ri = particles.radius[i];
+                           scratch.clear();
+                           for (std::size_t z = (cz ? cz - 1 : 0); z <= std::min(cz + 1, nz - 1); ++z)
+                               for (std::size_t y = (cy ? cy - 1 : 0); y <= std::min(cy + 1, ny - 1); ++y)
+                               {
+                                   const std::size_t row = (z * ny + y) * nx;
+                                   const std::size_t xBegin = cx ? cx - 1 : 0, xEnd = std::min(cx + 1, nx - 1);
+                                   // Cells of one row are contiguous in cellParticles_.
+                                   for (std::uint32_t k = cellStart_[row + xBegin]; k < cellStart_[row + xEnd + 1];
+                                        ++k)
+                                   {
+                                       const std::uint32_t j = cellParticles_[k];
+                                       if (j <= i)
+                                           continue;
+                                       const Real reach = ri + particles.radius[j] + skin;
+                                       if (lengthSquared(xi - particles.position[j]) < reach * reach)
+                                           scratch.push_back(j);
+                                   }
+                               }
+                           std::sort(scratch.begin(), scratch.end());
+                           out.insert(out.end(), scratch.begin(), scratch.end());
+                           // Count of pairs of i, turned into offsets below.
+                           firstStart[i + 1] = static_cast<std::uint32_t>(scratch.size());
+                       }
+                   });
+    for (std::size_t i = 0; i < n; ++i)
+        firstStart[i + 1] += firstStart[i];
+    const std::size_t pairCount = firstStart[n];
+    // The new list is built in fresh arrays and the old ones are freed after the merge, so that
+    // only one copy of the list is held between rebuilds.
+    std::vector<std::uint32_t> newFirst(pairCount), newSecond;
+    std::vector<Vec3> newTangential, newRolling;
+    newSecond.reserve(pairCount);
+    for (const auto& part : chunkSecond)
+        newSecond.insert(newSecond.end(), part.begin(), part.end());
+    for (std::size_t i = 0; i < n; ++i)
+        std::fill(newFirst.begin() + firstStart[i], newFirst.begin() + firstStart[i + 1],
+                  static_cast<std::uint32_t>(i));
 
     // Merge history by key: both lists are sorted by (i, j).
-    newHistory_.assign(newFirst_.size(), ContactHistory{});
+    newTangential.assign(pairCount, Vec3{});
+    if (keepRollingHistory)
+        newRolling.assign(pairCount, Vec3{});
+    const bool oldHasRolling = rollingSpring.size() == first.size();
     std::size_t old = 0;
-    for (std::size_t k = 0; k < newFirst_.size(); ++k)
+    const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
+    for (std::size_t k = 0; k < pairCount; ++k)
     {
-        const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
-        const std::uint64_t wanted = key(newFirst_[k], newSecond_[k]);
+        const std::uint64_t wanted = key(newFirst[k], newSecond[k]);
         while (old < first.size() && key(first[old], second[old]) < wanted)
             ++old;
         if (old < first.size() && key(first[old], second[old]) == wanted)
-            newHistory_[k] = history[old];
+        {
+            newTangential[k] = tangentialSpring[old];
+            if (keepRollingHistory && oldHasRolling)
+                newRolling[k] = rollingSpring[old];
+        }
     }
-    first.swap(newFirst_);
-    second.swap(newSecond_);
-    history.swap(newHistory_);
+    first.swap(newFirst);
+    second.swap(newSecond);
+    tangentialSpring.swap(newTangential);
+    if (keepRollingHistory)
+        rollingSpring.swap(newRolling);
+    else
+        rollingSpring.clear();
+    force.assign(pairCount, Vec3{});
+    tangentialTorque.assign(pairCount, Vec3{});
+    leverFirst.assign(pairCount, 0.0);
+    leverSecond.assign(pairCount, 0.0);
+    rollingTorque.assign(keepRollingTorque ? pairCount : 0, Vec3{});
+    mayBeActive.assign(pairCount, 1);
+    effectiveMass.resize(pairCount);
+    for (std::size_t k = 0; k < pairCount; ++k)
+    {
+        const Real mi = particles.mass[first[k]], mj = particles.mass[second[k]];
+        effectiveMass[k] = mi * mj / (mi + mj);
+    }
+    touchingScratch.clear();  // sized by the scalar force path when it runs
+
+    // Gather adjacency: for each particle, the slots where it is second, ascending.
+    for (std::size_t k = 0; k < pairCount; ++k)
+        ++secondStart[second[k] + 1];
+    for (std::size_t i = 0; i < n; ++i)
+        secondStart[i + 1] += secondStart[i];
+    secondSlots.resize(pairCount);
+    fill_.assign(secondStart.begin(), secondStart.end() - 1);
+    for (std::size_t k = 0; k < pairCount; ++k)
+        secondSlots[fill_[second[k]]++] = static_cast<std::uint32_t>(k);
 }
 
 } // namespace veridem::dem

@@ -2,8 +2,12 @@
 //
 //   kick-drift     v(t+dt/2) = v(t) + dt/2 a(t);  w likewise;  x(t+dt) = x(t) + dt v(t+dt/2)
 //   walls          prescribed motion to t + dt
-//   neighbours     rebuild the Verlet list if some particle moved more than skin/2
-//   forces         contact forces at x(t+dt) from the half-step velocities (pairs, then walls)
+//   neighbours     rebuild the Verlet and wall-contact lists if some particle moved more than
+//                  skin/2 (or a wall translated more than skin/2)
+//   contacts       per-contact forces at x(t+dt) from the half-step velocities, each written to
+//                  its own slot (pairs, then walls; parallel)
+//   gather         per-particle sums of the slots in a fixed order (parallel; the same bits for
+//                  any number of threads, STYLE 3.4)
 //   kick           v(t+dt) = v(t+dt/2) + dt/2 a(t+dt);  w likewise
 //
 // The dashpots and the tangential-spring increment use the half-step velocities: the spring
@@ -14,6 +18,8 @@
 #include "core/error.h"
 #include "dem/forces.h"
 #include "dem/integrate.h"
+
+#include <chrono>
 
 namespace veridem::dem
 {
@@ -40,6 +46,46 @@ std::uint32_t World::materialId(const std::string& name) const
     throw InputError("unknown material '" + name + "' (defined: " + known + ")");
 }
 
+namespace
+{
+
+/// Adds the time since the previous lap to one StepProfile field, when profiling is enabled.
+class StageClock
+{
+  public:
+    explicit StageClock(StepProfile& profile) : profile_(profile)
+    {
+        if (profile_.enabled)
+            last_ = std::chrono::steady_clock::now();
+    }
+    void lap(double StepProfile::*stage)
+    {
+        if (!profile_.enabled)
+            return;
+        const auto now = std::chrono::steady_clock::now();
+        profile_.*stage += std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+    }
+
+  private:
+    StepProfile& profile_;
+    std::chrono::steady_clock::time_point last_;
+};
+
+bool contactListsNeedRebuild(const World& world)
+{
+    return world.neighbors.needsRebuild(world.particles) ||
+           world.wallContacts.needsRebuild(world.walls, world.neighbors.skin);
+}
+
+void rebuildContactLists(World& world)
+{
+    world.neighbors.rebuild(world.particles);
+    world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin);
+}
+
+} // namespace
+
 void prepare(World& world)
 {
     if (world.pairs.count() != world.materials.size())
@@ -51,8 +97,19 @@ void prepare(World& world)
             maxRadius = std::max(maxRadius, r);
         world.neighbors.skin = 0.2 * maxRadius;
     }
-    world.neighbors.rebuild(world.particles);
-    world.wallContacts.history.resize(world.particles.size() * world.walls.size());
+    // Rolling springs are stored only if some pair uses the EPSD rolling model.
+    bool rollingHistory = false;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            rollingHistory = rollingHistory || world.pairs(a, b).rollingModel == RollingModel::Epsd;
+    world.neighbors.keepRollingHistory = rollingHistory;
+    bool rollingTorque = false;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            rollingTorque = rollingTorque || world.pairs(a, b).rollingModel != RollingModel::None;
+    world.neighbors.keepRollingTorque = rollingTorque;
+    world.wallContacts.keepRollingHistory = rollingHistory;
+    rebuildContactLists(world);
     world.prepared = true;
     computeForces(world, 0.0);
 }
@@ -62,12 +119,22 @@ void step(World& world, Real dt)
     if (!world.prepared)
         prepare(world);
 
-    kickDrift(world.particles, world.gravity, dt);     // v(t+dt/2), x(t+dt)
-    moveWalls(world.walls, dt);                        // wall motion to t+dt
-    if (world.neighbors.needsRebuild(world.particles)) // Verlet list + history merge
-        world.neighbors.rebuild(world.particles);
-    computeForces(world, dt);                               // contact forces at t+dt
-    kick(world.particles, world.gravity, dt, world.health); // v(t+dt)
+    StageClock clock(world.profile);
+
+    kickDrift(world.particles, world.gravity, dt);                // v(t+dt/2), x(t+dt)
+    moveWalls(world.walls, dt);                                   // wall motion to t+dt
+    clock.lap(&StepProfile::integration);
+    if (contactListsNeedRebuild(world))                           // Verlet + wall lists, history merge
+        rebuildContactLists(world);
+    clock.lap(&StepProfile::neighbours);
+    computePairForces(world, dt);                                 // 3. per-contact forces at t+dt
+    clock.lap(&StepProfile::pairForces);
+    computeWallForces(world, dt);
+    clock.lap(&StepProfile::wallForces);
+    gatherContactForces(world);                                   // 4. per-particle sums, fixed order
+    clock.lap(&StepProfile::gather);
+    kick(world.particles, world.gravity, dt, world.health);       // v(t+dt)
+    clock.lap(&StepProfile::integration);
 
     world.time += dt;
     ++world.stepCount;

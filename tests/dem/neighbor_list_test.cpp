@@ -55,12 +55,12 @@ TEST(NeighborList, HistorySurvivesRebuild)
     list.rebuild(p);
     ASSERT_GT(list.size(), 0u);
     for (std::size_t k = 0; k < list.size(); ++k)
-        list.history[k].tangentialSpring = {double(list.first[k]), double(list.second[k]), 0};
+        list.tangentialSpring[k] = {double(list.first[k]), double(list.second[k]), 0};
     list.rebuild(p);
     for (std::size_t k = 0; k < list.size(); ++k)
     {
-        EXPECT_EQ(list.history[k].tangentialSpring.x, double(list.first[k]));
-        EXPECT_EQ(list.history[k].tangentialSpring.y, double(list.second[k]));
+        EXPECT_EQ(list.tangentialSpring[k].x, double(list.first[k]));
+        EXPECT_EQ(list.tangentialSpring[k].y, double(list.second[k]));
     }
 }
 

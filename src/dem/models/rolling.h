@@ -15,6 +15,7 @@
 //   It holds a ball at rest on an incline with tan(theta) <= muR'.
 #pragma once
 
+#include "core/hot.h"
 #include "core/vec3.h"
 
 #include <cmath>

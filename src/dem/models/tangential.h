@@ -10,6 +10,7 @@
 //      the spring is reset to the cap, xi = -(Ft + etaT vt)/kt, so the dashpot sits inside the cap.
 #pragma once
 
+#include "core/hot.h"
 #include "core/vec3.h"
 
 #include <cmath>
@@ -25,7 +26,7 @@ struct TangentialResult
 };
 
 /// Rotates the stored spring into the plane normal to `normal`, keeping its length.
-inline Vec3 projectSpringToTangentPlane(const Vec3& spring, const Vec3& normal)
+VERIDEM_HOT_INLINE Vec3 projectSpringToTangentPlane(const Vec3& spring, const Vec3& normal)
 {
     const Real oldLength2 = lengthSquared(spring);
     if (oldLength2 == 0)
@@ -39,12 +40,12 @@ inline Vec3 projectSpringToTangentPlane(const Vec3& spring, const Vec3& normal)
 
 /// kt [N/m], etaT [N s/m], mu [-], normalForce Fn [N] (clipped to >= 0 here),
 /// tangentialVelocity vt [m/s] (in the tangent plane), dt [s].
-inline TangentialResult coulombSpringForce(Real kt, Real etaT, Real mu, Real normalForce, Vec3 spring,
+VERIDEM_HOT_INLINE TangentialResult coulombSpringForce(Real kt, Real etaT, Real mu, Real normalForce, Vec3 spring,
                                            const Vec3& normal, const Vec3& tangentialVelocity, Real dt)
 {
     spring = projectSpringToTangentPlane(spring, normal) + tangentialVelocity * dt;
     const Vec3 trial = -kt * spring - etaT * tangentialVelocity;
-    const Real cap = mu * std::fmax(normalForce, 0.0);
+    const Real cap = mu * (normalForce > 0 ? normalForce : 0.0);  // mu max(Fn, 0), NaN -> 0 like fmax (inlined)
     const Real trialLength2 = lengthSquared(trial);
     if (trialLength2 <= cap * cap)
         return {trial, spring, false};

@@ -108,6 +108,39 @@ inline WallGap wallGap(const Wall& wall, const Vec3& x, Real r)
     return std::visit([&](const auto& shape) { return wallGap(shape, wall.displacement, x, r); }, wall.shape);
 }
 
+/// True if a sphere (centre x, radius r) may touch the wall after the sphere and the wall have
+/// moved by at most `reach` [m] relative to each other: a conservative test for the wall-contact
+/// candidate list, true whenever wallGap() could become touching within that motion.
+inline bool wallNear(const PlaneShape& plane, const Vec3& offset, const Vec3& x, Real r, Real reach)
+{
+    const Vec3 relative = x - (plane.point + offset);
+    const Real distance = dot(relative, plane.normal);
+    if (r - distance <= -reach || distance < -r - reach)
+        return false;
+    if (std::isfinite(plane.diskRadius))
+    {
+        const Vec3 inPlane = relative - distance * plane.normal;
+        const Real limit = plane.diskRadius + reach;
+        if (lengthSquared(inPlane) > limit * limit)
+            return false;
+    }
+    return true;
+}
+
+inline bool wallNear(const DishShape& dish, const Vec3& offset, const Vec3& x, Real r, Real reach)
+{
+    const Vec3 centre = dish.lowestPoint + offset + Vec3{0, 0, dish.sphereRadius};
+    if (x.z > centre.z + reach)
+        return false;
+    return length(centre - x) + r - dish.sphereRadius > -reach;
+}
+
+inline bool wallNear(const Wall& wall, const Vec3& x, Real r, Real reach)
+{
+    return std::visit([&](const auto& shape) { return wallNear(shape, wall.displacement, x, r, reach); },
+                      wall.shape);
+}
+
 /// Velocity of the wall material at point P [m/s], at time offset `timeOffset` [s] from the
 /// wall's current position (the rotation axis moves with the wall's translation).
 inline Vec3 wallSurfaceVelocity(const Wall& wall, const Vec3& point, Real timeOffset = 0)

@@ -1,0 +1,282 @@
+// veridem_bench: the reference many-sphere benchmark of issue 5 (docs/performance.md).
+//
+//   veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S] [--threads T]
+//                 [--profile] [--repeat R] [--no-sort]
+//
+// bed / gas: spheres read from an .xyz file (x y z per line, metres), radius 1 mm, density 2500,
+//   linear spring-dashpot kn = 1000 N/m, kt = 2/7 kn, gamma_n = 5955.04 1/s (e = 0.5 for a pair),
+//   tangential damping 2/7 of normal, mu = 0.5, no rolling friction, box walls x = 0, L; y = 0, L;
+//   floor z = 0 (same law), gravity 9.81, dt = 1e-5 s, skin 0.5 mm. --tile N repeats the bed
+//   N x N times side by side (box N L x N L), e.g. --tile 7 gives 980,000 spheres.
+// turntable: one steel ball rolling on a turntable (the paper's Test 1 set-up with rolling
+//   friction), the cost of long single-particle verification runs.
+//
+// The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
+// unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by stage
+// and the kinetic energy at the end. Nothing is written during the timed loop.
+#include "dem/spatial_sort.h"
+#include "dem/world.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+using namespace veridem;
+using namespace veridem::dem;
+
+namespace
+{
+
+struct Options
+{
+    std::string scene = "bed";
+    std::string file;
+    int tile = 1;
+    long steps = 10000;
+    int threads = 1;
+    int repeat = 1;
+    bool profile = false;
+    bool sort = true;  // renumber particles in Morton order of cells before the run
+};
+
+[[noreturn]] void usage()
+{
+    std::fprintf(stderr, "usage: veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S]\n"
+                         "                     [--threads T] [--repeat R] [--profile] [--no-sort]\n");
+    std::exit(2);
+}
+
+Options parse(int argc, char** argv)
+{
+    Options o;
+    for (int a = 1; a < argc; ++a)
+    {
+        const std::string arg = argv[a];
+        auto value = [&]() -> std::string
+        {
+            if (a + 1 >= argc)
+                usage();
+            return argv[++a];
+        };
+        if (arg == "--scene")
+            o.scene = value();
+        else if (arg == "--file")
+            o.file = value();
+        else if (arg == "--tile")
+            o.tile = std::stoi(value());
+        else if (arg == "--steps")
+            o.steps = std::stol(value());
+        else if (arg == "--threads")
+            o.threads = std::stoi(value());
+        else if (arg == "--repeat")
+            o.repeat = std::stoi(value());
+        else if (arg == "--no-sort")
+            o.sort = false;
+        else if (arg == "--profile")
+            o.profile = true;
+        else
+            usage();
+    }
+    if (o.file.empty())
+        o.file = std::string(VERIDEM_SHARED_BENCH_DIR) + (o.scene == "gas" ? "/random_gas_20k.xyz" : "/settled_bed_20k.xyz");
+    return o;
+}
+
+double peakResidentBytes()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux: kilobytes
+}
+
+double cpuSeconds()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double currentResidentBytes()
+{
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * 4096.0;
+}
+
+std::vector<Vec3> readXyz(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw std::runtime_error("cannot open " + path);
+    std::vector<Vec3> points;
+    std::string line;
+    while (std::getline(in, line))
+    {
+        std::istringstream row(line);
+        Vec3 x;
+        if (row >> x.x >> x.y >> x.z)
+            points.push_back(x);
+    }
+    return points;
+}
+
+Wall plane(const char* name, Vec3 point, Vec3 normal)
+{
+    Wall w;
+    w.name = name;
+    w.shape = PlaneShape{point, normal};
+    return w;
+}
+
+/// The reference bed (or gas) of issue 5, tiled n x n side by side.
+World bedWorld(const Options& o)
+{
+    const std::vector<Vec3> base = readXyz(o.file);
+    const Real box = 0.1, radius = 1e-3, density = 2500;
+    World world;
+    Material m;
+    m.name = "glass";
+    m.density = density;
+    m.normalStiffness = 1000;
+    m.tangentialStiffnessRatio = 2.0 / 7.0;
+    m.normalDampingRate = 5955.04;  // e = 0.5 for a pair of equal spheres
+    m.friction = 0.5;
+    m.rollingModel = RollingModel::None;
+    world.addMaterial(m);
+    world.gravity = {0, 0, -9.81};
+    world.neighbors.skin = 0.5e-3;
+    const Real side = box * o.tile;
+    world.walls.push_back(plane("x0", {0, 0, 0}, {1, 0, 0}));
+    world.walls.push_back(plane("x1", {side, 0, 0}, {-1, 0, 0}));
+    world.walls.push_back(plane("y0", {0, 0, 0}, {0, 1, 0}));
+    world.walls.push_back(plane("y1", {0, side, 0}, {0, -1, 0}));
+    world.walls.push_back(plane("floor", {0, 0, 0}, {0, 0, 1}));
+    world.particles.reserve(base.size() * static_cast<std::size_t>(o.tile * o.tile));
+    for (int ty = 0; ty < o.tile; ++ty)
+        for (int tx = 0; tx < o.tile; ++tx)
+            for (const Vec3& x : base)
+                world.particles.add(x + Vec3{tx * box, ty * box, 0}, {}, {}, radius, density, 0);
+    return world;
+}
+
+/// One steel ball (a = 6.35 mm) rolling on a turntable turning at 10 rad/s, with type A rolling
+/// friction (the paper's Test 1 set-up with a push).
+World turntableWorld()
+{
+    World world;
+    Material m;
+    m.name = "steel";
+    m.density = 7800;
+    m.normalStiffness = 1e5;
+    m.restitution = 0.8;
+    m.friction = 0.15;
+    m.rollingModel = RollingModel::ConstantTorque;
+    m.rollingFrictionLength = 1.5e-6;
+    world.addMaterial(m);
+    Wall table;
+    table.name = "turntable";
+    table.shape = PlaneShape{{0, 0, 0}, {0, 0, 1}, 0.2};
+    table.motion.angularVelocity = {0, 0, 10};
+    world.walls.push_back(table);
+    const Real a = 6.35e-3;
+    const Real mass = m.density * 4.0 / 3.0 * 3.14159265358979 * a * a * a;
+    const Real overlap = mass * 9.81 / m.normalStiffness;
+    world.particles.add({-0.04, 0, a - overlap}, {0, -0.107, 0}, {}, a, m.density, 0);
+    return world;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const Options o = parse(argc, argv);
+#ifdef _OPENMP
+    omp_set_num_threads(o.threads);
+#else
+    if (o.threads != 1)
+        std::fprintf(stderr, "veridem_bench: built without OpenMP; running on one thread\n");
+#endif
+    const double residentBefore = currentResidentBytes();
+    const bool single = o.scene == "turntable";
+    const Real dt = 1e-5;
+
+    for (int r = 0; r < o.repeat; ++r)
+    {
+        World world = single ? turntableWorld() : bedWorld(o);
+        const std::size_t n = world.particles.size();
+        const auto setupStart = std::chrono::steady_clock::now();
+        if (o.sort)
+            sortParticlesSpatially(world);
+        prepare(world);
+        const double setupSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
+        world.profile.enabled = o.profile;
+
+        const double cpuStart = cpuSeconds();
+        const auto start = std::chrono::steady_clock::now();
+        for (long s = 0; s < o.steps; ++s)
+            step(world, dt);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double cpu = cpuSeconds() - cpuStart;
+        const double rate = static_cast<double>(n) * static_cast<double>(o.steps) / seconds;
+
+        const double peak = peakResidentBytes();
+        std::printf("scene %s  particles %zu  threads %d  steps %ld  dt %g s\n", o.scene.c_str(), n, o.threads,
+                    o.steps, dt);
+        std::printf("  wall time %.3f s (prepare %.3f s)  %.4g particle-steps/s  %.4g steps/s\n", seconds,
+                    setupSeconds, rate, static_cast<double>(o.steps) / seconds);
+        // CPU time of the process over the loop: on a shared machine, the rate per busy core is a
+        // steadier measure than wall time (with T threads, compare cpu / T with the wall time).
+        std::printf("  cpu time %.3f s = %.2f cores busy  %.4g particle-steps per cpu-second\n", cpu, cpu / seconds,
+                    static_cast<double>(n) * static_cast<double>(o.steps) / cpu);
+        std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
+                    peak / 1e6, peak / static_cast<double>(n), (peak - residentBefore) / static_cast<double>(n));
+        const double particleBytes = static_cast<double>(
+            n * (4 * sizeof(Vec3) + sizeof(Vec3) + 4 * sizeof(Real) + sizeof(std::uint32_t)));
+        std::printf("  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",
+                    particleBytes / static_cast<double>(n),
+                    static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
+                    static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
+        std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
+                    world.neighbors.size(), static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
+                    world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
+        const auto touching = std::count_if(world.neighbors.force.begin(), world.neighbors.force.end(),
+                                            [](const Vec3& f) { return !(f == Vec3{}); });
+        const auto wallTouching = std::count_if(world.wallContacts.force.begin(), world.wallContacts.force.end(),
+                                                [](const Vec3& f) { return !(f == Vec3{}); });
+        std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n", touching,
+                    static_cast<double>(touching) / static_cast<double>(n), world.wallContacts.size(), wallTouching);
+        std::printf("  kinetic energy after %ld steps %.9e J\n", o.steps, kineticEnergy(world));
+        if (o.profile)
+        {
+            const StepProfile& p = world.profile;
+            const double total = p.integration + p.neighbours + p.pairForces + p.wallForces + p.gather;
+            auto share = [&](const char* name, double t)
+            { std::printf("    %-22s %8.3f s %5.1f %%  %6.1f ns/particle-step\n", name, t, 100 * t / total,
+                          1e9 * t / (static_cast<double>(n) * static_cast<double>(o.steps))); };
+            std::printf("  time by stage (timers on):\n");
+            share("neighbour rebuild", p.neighbours);
+            share("pair forces", p.pairForces);
+            share("wall forces", p.wallForces);
+            share("gather (fixed order)", p.gather);
+            share("integration", p.integration);
+        }
+        std::fflush(stdout);
+    }
+    return 0;
+}

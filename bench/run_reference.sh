@@ -1,0 +1,64 @@
+#!/bin/sh
+# The measurements of docs/performance.md, in one session so that ratios are fair on a shared
+# machine: for each scene (settled bed, gas) and each thread/rank count (1, 2), veridem, then
+# LAMMPS, then LIGGGHTS (if installed: apt-get install -y lammps liggghts), on the same input; then
+# the 1e6-sphere bed and the one-ball turntable.
+#
+#   bench/run_reference.sh [BUILD_DIR] [STEPS]      (defaults: build/release, 10000)
+#
+# VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench also runs that build (e.g. an older commit)
+# on the bed (1 thread) and the turntable, for a before/after ratio in the same session.
+# OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
+# default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
+# every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
+# halves the two-thread rate of short steps (the gas). Override either variable to compare.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/.." && pwd)
+build=${1:-$root/build/release}
+steps=${2:-10000}
+shared=${VERIDEM_SHARED_BENCH_DIR:-$root/../shared/bench}
+export GOMP_SPINCOUNT=${GOMP_SPINCOUNT:-20000}
+bench="$build/bench/veridem_bench"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+python3 "$here/lammps/xyz_to_data.py" "$shared/settled_bed_20k.xyz" "$work/bed.data" 0.05
+python3 "$here/lammps/xyz_to_data.py" "$shared/random_gas_20k.xyz" "$work/gas.data" 0.32
+
+rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
+  # "Loop time of T on P procs for N steps with M atoms"
+  awk '/^Loop time of/ {printf "%.4g", $12 * $9 / $4}' "$1"
+}
+
+echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset} GOMP_SPINCOUNT=$GOMP_SPINCOUNT"
+for scene in bed gas; do
+  for n in 1 2; do
+    echo "== $scene, $n thread(s)/rank(s), $steps steps"
+    "$bench" --scene "$scene" --steps "$steps" --threads "$n" --file "$shared/$( [ $scene = bed ] && echo settled_bed_20k || echo random_gas_20k ).xyz" \
+      | sed 's/^/   veridem /'
+    if command -v lmp > /dev/null; then
+      mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/$scene.data" \
+        -var steps "$steps" -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
+      echo "   LAMMPS   $(rate_of_loop "$work/lammps.log") particle-steps/s  ($(grep '^Loop time' "$work/lammps.log"))"
+      echo "   LAMMPS   kinetic energy (trans, rot, total) after $steps steps: $(awk -v s="$steps" '$1 == s && NF == 5 {print $3, $4, $5}' "$work/lammps.log")"
+    fi
+    if command -v liggghts > /dev/null; then
+      mpirun --allow-run-as-root --oversubscribe -np "$n" liggghts -in "$here/lammps/bed_liggghts.in" \
+        -var data "$work/$scene.data" -var steps "$steps" -log "$work/liggghts.log" -screen none > /dev/null 2>&1
+      echo "   LIGGGHTS $(rate_of_loop "$work/liggghts.log") particle-steps/s  ($(grep '^Loop time' "$work/liggghts.log" | cut -d, -f1))"
+      echo "   LIGGGHTS kinetic energy (trans, rot) after $steps steps: $(awk -v s="$steps" '$1 == s && NF == 4 {print $3, $4}' "$work/liggghts.log")"
+    fi
+  done
+done
+echo "== 1e6-sphere bed (the 20k bed tiled 7 x 7 = 980,000 spheres), 200 steps, 1 and 2 threads"
+for n in 1 2; do "$bench" --tile 7 --steps 200 --threads "$n" | sed 's/^/   veridem /'; done
+echo "== one ball on a turntable, 3,000,000 steps"
+"$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
+if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
+  echo "== baseline build $VERIDEM_BASELINE_BENCH: bed 1 thread, then turntable; this build again"
+  "$VERIDEM_BASELINE_BENCH" --steps "$steps" | sed 's/^/   baseline /'
+  "$bench" --steps "$steps" --threads 1 | sed 's/^/   veridem /'
+  "$VERIDEM_BASELINE_BENCH" --scene turntable --steps 3000000 | sed 's/^/   baseline /'
+  "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
+fi

@@ -1,0 +1,102 @@
+#include "dem/wall_contacts.h"
+
+#include "core/error.h"
+#include "dem/parallel.h"
+
+#include <algorithm>
+#include <string>
+
+namespace veridem::dem
+{
+
+bool WallContactList::needsRebuild(const std::vector<Wall>& walls, Real skin) const
+{
+    if (wallDisplacementAtBuild_.size() != walls.size())
+        return true;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+        if (lengthSquared(walls[w].displacement - wallDisplacementAtBuild_[w]) > 0.25 * skin * skin)
+            return true;
+    return false;
+}
+
+void WallContactList::rebuild(const ParticleStore& particles, const std::vector<Wall>& walls, Real skin)
+{
+    const std::size_t n = particles.size();
+    wallDisplacementAtBuild_.resize(walls.size());
+    for (std::size_t w = 0; w < walls.size(); ++w)
+        wallDisplacementAtBuild_[w] = walls[w].displacement;
+
+    // Candidates per chunk of particles, concatenated in order (sorted by (particle, wall)).
+    const int chunks = std::min(loopThreads(n), 64);
+    std::vector<std::vector<std::uint32_t>> chunkParticle(static_cast<std::size_t>(chunks)),
+        chunkWall(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks,
+                   [&](int c, std::size_t begin, std::size_t end)
+                   {
+                       auto& ps = chunkParticle[static_cast<std::size_t>(c)];
+                       auto& ws = chunkWall[static_cast<std::size_t>(c)];
+                       for (std::size_t i = begin; i < end; ++i)
+                           for (std::size_t w = 0; w < walls.size(); ++w)
+                               if (wallNear(walls[w], particles.position[i], particles.radius[i], skin))
+                               {
+                                   ps.push_back(static_cast<std::uint32_t>(i));
+                                   ws.push_back(static_cast<std::uint32_t>(w));
+                               }
+                   });
+    std::vector<std::uint32_t> newParticle, newWall;
+    for (int c = 0; c < chunks; ++c)
+    {
+        const auto& ps = chunkParticle[static_cast<std::size_t>(c)];
+        const auto& ws = chunkWall[static_cast<std::size_t>(c)];
+        newParticle.insert(newParticle.end(), ps.begin(), ps.end());
+        newWall.insert(newWall.end(), ws.begin(), ws.end());
+    }
+    const std::size_t count = newParticle.size();
+
+    // Merge history by key.
+    std::vector<Vec3> newTangential(count), newRolling(keepRollingHistory ? count : 0);
+    const bool oldHasRolling = rollingSpring.size() == particle.size();
+    const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
+    std::size_t old = 0;
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        const std::uint64_t wanted = key(newParticle[k], newWall[k]);
+        while (old < particle.size() && key(particle[old], wall[old]) < wanted)
+            ++old;
+        if (old < particle.size() && key(particle[old], wall[old]) == wanted)
+        {
+            newTangential[k] = tangentialSpring[old];
+            if (keepRollingHistory && oldHasRolling)
+                newRolling[k] = rollingSpring[old];
+        }
+    }
+    particle.swap(newParticle);
+    wall.swap(newWall);
+    tangentialSpring.swap(newTangential);
+    rollingSpring.swap(newRolling);
+    force.assign(count, Vec3{});
+    torque.assign(count, Vec3{});
+    start.assign(n + 1, 0);
+    for (std::size_t k = 0; k < count; ++k)
+        ++start[particle[k] + 1];
+    for (std::size_t i = 0; i < n; ++i)
+        start[i + 1] += start[i];
+}
+
+Vec3& WallContactList::tangentialSpringOf(std::uint32_t particleIndex, std::uint32_t wallIndex)
+{
+    for (std::size_t k = 0; k < particle.size(); ++k)
+        if (particle[k] == particleIndex && wall[k] == wallIndex)
+            return tangentialSpring[k];
+    throw InputError("particle " + std::to_string(particleIndex) + " has no contact slot with wall " +
+                     std::to_string(wallIndex) + " (it is not within the neighbour skin of it)");
+}
+
+std::size_t WallContactList::memoryBytes() const
+{
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(particle) + bytes(wall) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
+           bytes(torque) + bytes(start) + bytes(wallDisplacementAtBuild_);
+}
+
+} // namespace veridem::dem
