@@ -66,6 +66,7 @@ dem::Material readMaterial(TableReader& t)
         t.fail("rolling_friction_dimensionless",
                "give rolling friction as a length or dimensionless, not both");
     m.rollingDampingRatio = t.number("rolling_damping_ratio", 0.3);
+    m.rollingTwist = t.boolean("rolling_twist", true);
     const bool anyRolling = m.rollingFrictionLength > 0 || m.rollingFrictionDimensionless > 0;
     m.rollingModel = !anyRolling || rolling == "none" ? dem::RollingModel::None
                      : rolling == "epsd"              ? dem::RollingModel::Epsd
