@@ -12,12 +12,10 @@
 //   friction), the cost of long single-particle verification runs.
 //
 // The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
-// unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by stage
-// and the kinetic energy at the end. Nothing is written during the timed loop.
+// unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
+// stage and the kinetic energy at the end. Nothing is written during the timed loop.
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
-
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +26,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <sys/resource.h>
 #include <vector>
 
 #ifdef _OPENMP
@@ -49,13 +48,14 @@ struct Options
     int threads = 1;
     int repeat = 1;
     bool profile = false;
-    bool sort = true;  // renumber particles in Morton order of cells before the run
+    bool sort = true; // renumber particles in Morton order of cells before the run
 };
 
 [[noreturn]] void usage()
 {
-    std::fprintf(stderr, "usage: veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S]\n"
-                         "                     [--threads T] [--repeat R] [--profile] [--no-sort]\n");
+    std::fprintf(stderr,
+                 "usage: veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S]\n"
+                 "                     [--threads T] [--repeat R] [--profile] [--no-sort]\n");
     std::exit(2);
 }
 
@@ -91,7 +91,8 @@ Options parse(int argc, char** argv)
             usage();
     }
     if (o.file.empty())
-        o.file = std::string(VERIDEM_SHARED_BENCH_DIR) + (o.scene == "gas" ? "/random_gas_20k.xyz" : "/settled_bed_20k.xyz");
+        o.file = std::string(VERIDEM_SHARED_BENCH_DIR) +
+                 (o.scene == "gas" ? "/random_gas_20k.xyz" : "/settled_bed_20k.xyz");
     return o;
 }
 
@@ -99,7 +100,7 @@ double peakResidentBytes()
 {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux: kilobytes
+    return static_cast<double>(usage.ru_maxrss) * 1024.0; // Linux: kilobytes
 }
 
 double cpuSeconds()
@@ -154,7 +155,7 @@ World bedWorld(const Options& o)
     m.density = density;
     m.normalStiffness = 1000;
     m.tangentialStiffnessRatio = 2.0 / 7.0;
-    m.normalDampingRate = 5955.04;  // e = 0.5 for a pair of equal spheres
+    m.normalDampingRate = 5955.04; // e = 0.5 for a pair of equal spheres
     m.friction = 0.5;
     m.rollingModel = RollingModel::None;
     world.addMaterial(m);
@@ -231,44 +232,52 @@ int main(int argc, char** argv)
         const auto start = std::chrono::steady_clock::now();
         for (long s = 0; s < o.steps; ++s)
             step(world, dt);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double cpu = cpuSeconds() - cpuStart;
         const double rate = static_cast<double>(n) * static_cast<double>(o.steps) / seconds;
 
         const double peak = peakResidentBytes();
-        std::printf("scene %s  particles %zu  threads %d  steps %ld  dt %g s\n", o.scene.c_str(), n, o.threads,
-                    o.steps, dt);
+        std::printf("scene %s  particles %zu  threads %d  steps %ld  dt %g s\n", o.scene.c_str(), n,
+                    o.threads, o.steps, dt);
         std::printf("  wall time %.3f s (prepare %.3f s)  %.4g particle-steps/s  %.4g steps/s\n", seconds,
                     setupSeconds, rate, static_cast<double>(o.steps) / seconds);
         // CPU time of the process over the loop: on a shared machine, the rate per busy core is a
         // steadier measure than wall time (with T threads, compare cpu / T with the wall time).
-        std::printf("  cpu time %.3f s = %.2f cores busy  %.4g particle-steps per cpu-second\n", cpu, cpu / seconds,
-                    static_cast<double>(n) * static_cast<double>(o.steps) / cpu);
+        std::printf("  cpu time %.3f s = %.2f cores busy  %.4g particle-steps per cpu-second\n", cpu,
+                    cpu / seconds, static_cast<double>(n) * static_cast<double>(o.steps) / cpu);
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
-                    peak / 1e6, peak / static_cast<double>(n), (peak - residentBefore) / static_cast<double>(n));
+                    peak / 1e6, peak / static_cast<double>(n),
+                    (peak - residentBefore) / static_cast<double>(n));
         const double particleBytes = static_cast<double>(
             n * (4 * sizeof(Vec3) + sizeof(Vec3) + 4 * sizeof(Real) + sizeof(std::uint32_t)));
-        std::printf("  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",
-                    particleBytes / static_cast<double>(n),
-                    static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
-                    static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
+        std::printf(
+            "  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",
+            particleBytes / static_cast<double>(n),
+            static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
+            static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
         std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
-                    world.neighbors.size(), static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
+                    world.neighbors.size(),
+                    static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
         const auto touching = std::count_if(world.neighbors.force.begin(), world.neighbors.force.end(),
                                             [](const Vec3& f) { return !(f == Vec3{}); });
-        const auto wallTouching = std::count_if(world.wallContacts.force.begin(), world.wallContacts.force.end(),
-                                                [](const Vec3& f) { return !(f == Vec3{}); });
-        std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n", touching,
-                    static_cast<double>(touching) / static_cast<double>(n), world.wallContacts.size(), wallTouching);
+        const auto wallTouching =
+            std::count_if(world.wallContacts.force.begin(), world.wallContacts.force.end(),
+                          [](const Vec3& f) { return !(f == Vec3{}); });
+        std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n",
+                    touching, static_cast<double>(touching) / static_cast<double>(n),
+                    world.wallContacts.size(), wallTouching);
         std::printf("  kinetic energy after %ld steps %.9e J\n", o.steps, kineticEnergy(world));
         if (o.profile)
         {
             const StepProfile& p = world.profile;
             const double total = p.integration + p.neighbours + p.pairForces + p.wallForces + p.gather;
             auto share = [&](const char* name, double t)
-            { std::printf("    %-22s %8.3f s %5.1f %%  %6.1f ns/particle-step\n", name, t, 100 * t / total,
-                          1e9 * t / (static_cast<double>(n) * static_cast<double>(o.steps))); };
+            {
+                std::printf("    %-22s %8.3f s %5.1f %%  %6.1f ns/particle-step\n", name, t, 100 * t / total,
+                            1e9 * t / (static_cast<double>(n) * static_cast<double>(o.steps)));
+            };
             std::printf("  time by stage (timers on):\n");
             share("neighbour rebuild", p.neighbours);
             share("pair forces", p.pairForces);

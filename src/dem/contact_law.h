@@ -18,29 +18,29 @@ namespace veridem::dem
 /// Geometry and kinematics of one contact, as seen by particle i.
 struct ContactInput
 {
-    Vec3 normal;                   // unit, from the partner towards particle i
-    Real overlap = 0;              // delta > 0 [m]
-    Vec3 relativeVelocity;         // contact-point velocity of i minus that of the partner [m/s]
-    Vec3 relativeAngularVelocity;  // w_i - w_partner [rad/s]
-    Real effectiveMass = 0;        // m* [kg]
-    Real effectiveRadius = 0;      // R* [m] (Hertz, and R_r for dimensionless rolling friction)
-    Real rollingInertia = 0;       // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
-    Real spinInertia = 0;          // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
+    Vec3 normal;                  // unit, from the partner towards particle i
+    Real overlap = 0;             // delta > 0 [m]
+    Vec3 relativeVelocity;        // contact-point velocity of i minus that of the partner [m/s]
+    Vec3 relativeAngularVelocity; // w_i - w_partner [rad/s]
+    Real effectiveMass = 0;       // m* [kg]
+    Real effectiveRadius = 0;     // R* [m] (Hertz, and R_r for dimensionless rolling friction)
+    Real rollingInertia = 0;      // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
+    Real spinInertia = 0;         // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
 };
 
 /// Per-contact history carried from step to step.
 struct ContactHistory
 {
-    Vec3 tangentialSpring;  // xi [m]
-    Vec3 rollingSpring;     // EPSD elastic torque [N m]
+    Vec3 tangentialSpring; // xi [m]
+    Vec3 rollingSpring;    // EPSD elastic torque [N m]
 };
 
 struct ContactOutput
 {
-    Vec3 force;          // total force on i [N] (normal + tangential)
-    Vec3 tangentialForce;  // its tangential part [N] (its torque lever is applied by the caller)
-    Vec3 rollingTorque;  // rolling/twisting resistance torque on i [N m]
-    Real normalForce = 0;  // signed Fn [N] (> 0 repulsive; may be slightly < 0: no clipping)
+    Vec3 force;           // total force on i [N] (normal + tangential)
+    Vec3 tangentialForce; // its tangential part [N] (its torque lever is applied by the caller)
+    Vec3 rollingTorque;   // rolling/twisting resistance torque on i [N m]
+    Real normalForce = 0; // signed Fn [N] (> 0 repulsive; may be slightly < 0: no clipping)
     bool sliding = false;
 };
 
@@ -50,8 +50,8 @@ struct ContactCoefficients
     Real kn = 0, kt = 0, etaN = 0, etaT = 0;
 };
 
-VERIDEM_HOT_INLINE ContactCoefficients contactCoefficients(const PairParams& p, Real overlap, Real effectiveMass,
-                                               Real effectiveRadius)
+VERIDEM_HOT_INLINE ContactCoefficients contactCoefficients(const PairParams& p, Real overlap,
+                                                           Real effectiveMass, Real effectiveRadius)
 {
     ContactCoefficients c;
     if (p.normalModel == NormalModel::Linear)
@@ -78,15 +78,15 @@ inline Real rollingFrictionLength(const PairParams& p, Real rollingRadius)
     return p.rollingLength + p.rollingDimensionless * rollingRadius;
 }
 
-VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const ContactInput& in, ContactHistory& history,
-                                     Real dt)
+VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const ContactInput& in,
+                                                 ContactHistory& history, Real dt)
 {
     // Built from locals and returned whole: a default-constructed `out` filled in field by field
     // makes GCC zero it in memory first (rep stos) on every contact.
     const ContactCoefficients c = contactCoefficients(p, in.overlap, in.effectiveMass, in.effectiveRadius);
 
     // 1. Normal force.
-    const Real normalSpeed = dot(in.relativeVelocity, in.normal);  // < 0 while approaching
+    const Real normalSpeed = dot(in.relativeVelocity, in.normal); // < 0 while approaching
     const Real elastic = p.normalModel == NormalModel::Linear
                              ? c.kn * in.overlap
                              : hertzElasticForce(p.effectiveModulus, in.effectiveRadius, in.overlap);
@@ -105,7 +105,8 @@ VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const Cont
     // bodies are neglected in this estimate).
     const Real dampingWeight = dashpotWeight * c.etaN;
     const Real halfStepOverMass = 0.5 * dt / in.effectiveMass;
-    const Real normalSpeedEnd = (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
+    const Real normalSpeedEnd =
+        (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
     const Real normalForce = elastic - dampingWeight * normalSpeedEnd;
 
     // 2. Tangential force, capped by mu * Fn.

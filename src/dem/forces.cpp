@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-
 #include <immintrin.h>
 
 namespace veridem::dem
@@ -30,7 +29,7 @@ namespace
 
 constexpr int kMaxChunks = 64;
 
-struct WorstOverlap  // trivial on purpose: per-chunk arrays of it are not cleared every step
+struct WorstOverlap // trivial on purpose: per-chunk arrays of it are not cleared every step
 {
     Real ratio;
     std::uint32_t particle;
@@ -61,7 +60,6 @@ ExtraInputs extraInputsFor(const PairParams& params)
             params.rollingModel == RollingModel::ConstantTorque, params.rollingModel == RollingModel::Epsd};
 }
 
-
 // ---------------------------------------------------------------------------------------------
 // Four contacts at a time (linear spring-dashpot, no rolling resistance: the reference bed's law).
 //
@@ -74,15 +72,21 @@ ExtraInputs extraInputsFor(const PairParams& params)
 // with another law go through the scalar path.
 // ---------------------------------------------------------------------------------------------
 #if defined(__AVX__)
-using Lanes = double __attribute__((vector_size(32)));  // same type as __m256d
+using Lanes = double __attribute__((vector_size(32))); // same type as __m256d
 using LaneMask = long long __attribute__((vector_size(32)));
 constexpr std::size_t kLanes = 4;
-inline Lanes laneSqrt(Lanes x) { return _mm256_sqrt_pd(x); }
+inline Lanes laneSqrt(Lanes x)
+{
+    return _mm256_sqrt_pd(x);
+}
 #else
-using Lanes = double __attribute__((vector_size(16)));  // same type as __m128d
+using Lanes = double __attribute__((vector_size(16))); // same type as __m128d
 using LaneMask = long long __attribute__((vector_size(16)));
 constexpr std::size_t kLanes = 2;
-inline Lanes laneSqrt(Lanes x) { return _mm_sqrt_pd(x); }  // correctly rounded, as std::sqrt
+inline Lanes laneSqrt(Lanes x)
+{
+    return _mm_sqrt_pd(x);
+} // correctly rounded, as std::sqrt
 #endif
 
 /// True if pairs of these parameters may take the four-lane path (all pairs must, or none does).
@@ -91,7 +95,7 @@ bool batchable(const PairParams& params)
     return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
 }
 
-constexpr std::size_t kBatch = 64;  // contacts per batch (a multiple of 4); ~25 KB of lanes, in L1
+constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of 4); ~25 KB of lanes, in L1
 
 /// Per-batch lanes: inputs are gathered here with scalar stores, read back as vectors long after
 /// (a vector load right after scalar stores to the same bytes misses store forwarding).
@@ -101,7 +105,8 @@ struct PairBatch
     alignas(32) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
     alignas(32) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
     alignas(32) double effectiveMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
-    alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch], mu[kBatch];
+    alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
+        mu[kBatch];
     // outputs
     alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch], ttx[kBatch], tty[kBatch], ttz[kBatch];
     alignas(32) double leverI[kBatch], leverJ[kBatch], springX[kBatch], springY[kBatch], springZ[kBatch];
@@ -131,7 +136,10 @@ inline Lanes load(const double* a)
     std::memcpy(&v, a, sizeof v);
     return v;
 }
-inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
+inline void store(double* a, const Lanes& v)
+{
+    std::memcpy(a, &v, sizeof v);
+}
 
 /// Evaluates the touching contacts in lanes [0, count) of `b` (count <= kBatch; slot, i, j and the
 /// separation and radii already collected by the caller; the law batchable) and writes their
@@ -169,7 +177,7 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         b.wjx[m] = wj.x;
         b.wjy[m] = wj.y;
         b.wjz[m] = wj.z;
-        b.effectiveMass[m] = list.effectiveMass[k];        // m_i m_j / (m_i + m_j), per slot
+        b.effectiveMass[m] = list.effectiveMass[k]; // m_i m_j / (m_i + m_j), per slot
         b.hx[m] = h.x;
         b.hy[m] = h.y;
         b.hz[m] = h.z;
@@ -210,7 +218,7 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         const Lanes rate = load(b.rate + m);
         const LaneMask fromRate = rate >= zero;
         Lanes etaN = rate * effectiveMass;
-        if (!allLanes(fromRate))  // damping from restitution: 2 zeta sqrt(m* kn)
+        if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
             etaN = fromRate ? etaN : load(b.fromRatio + m) * laneSqrt(effectiveMass * kn);
         const Lanes etaT = load(b.etaRatio + m) * etaN;
 
@@ -254,7 +262,8 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         if (!allLanes(sticks))
         {
             const Lanes slideScale = cap / laneSqrt(trialLength2);
-            const Lanes slideX = trialX * slideScale, slideY = trialY * slideScale, slideZ = trialZ * slideScale;
+            const Lanes slideX = trialX * slideScale, slideY = trialY * slideScale,
+                        slideZ = trialZ * slideScale;
             const LaneMask stiff = kt > zero;
             ftx = sticks ? trialX : slideX;
             fty = sticks ? trialY : slideY;
@@ -279,8 +288,8 @@ inline void store(double* a, const Lanes& v) { std::memcpy(a, &v, sizeof v); }
         store(b.ratio + m, overlap / (rj < ri ? rj : ri));
     }
 
-    std::uint8_t* const mayBeActive = list.mayBeActive.data();  // (a byte store aliases anything:
-    Vec3* const spring = list.tangentialSpring.data();           //  array bases are kept in locals)
+    std::uint8_t* const mayBeActive = list.mayBeActive.data(); // (a byte store aliases anything:
+    Vec3* const spring = list.tangentialSpring.data();         //  array bases are kept in locals)
     Vec3* const force = list.force.data();
     Vec3* const tangentialTorque = list.tangentialTorque.data();
     Real* const leverFirst = list.leverFirst.data();
@@ -315,7 +324,7 @@ void computePairForces(World& world, Real dt)
             allBatchable = allBatchable && batchable(world.pairs(a, b));
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
     if (!allBatchable)
-        list.touchingScratch.resize(pairCount);  // the scalar path's per-chunk lists of touching slots
+        list.touchingScratch.resize(pairCount); // the scalar path's per-chunk lists of touching slots
     const int chunks = std::min(loopThreads(pairCount), kMaxChunks);
     WorstOverlap worst[kMaxChunks];
     parallelChunks(
@@ -411,8 +420,9 @@ void computePairForces(World& world, Real dt)
                 in.normal = distance > 0 ? separation / distance : Vec3{0, 0, 1};
                 in.overlap = touching - distance;
                 const Real leverI = ri * distance / touching, leverJ = rj * distance / touching;
-                in.relativeVelocity = p.velocity[i] - p.velocity[j] -
-                                      cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
+                in.relativeVelocity =
+                    p.velocity[i] - p.velocity[j] -
+                    cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
                 in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
                 in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
                 if (extra.effectiveRadius)
@@ -427,7 +437,7 @@ void computePairForces(World& world, Real dt)
                 const ContactOutput out = evaluateContact(params, in, history, dt);
                 list.setHistory(k, history);
 
-                const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce);  // n x Ft
+                const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
                 list.force[k] = out.force;
                 list.tangentialTorque[k] = tangentialTorque;
                 list.leverFirst[k] = leverI;
@@ -450,7 +460,8 @@ namespace
 {
 
 /// Wall slots [begin, end): the scalar contact law, outputs into the slots.
-WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt, std::size_t begin, std::size_t end)
+WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt, std::size_t begin,
+                              std::size_t end)
 {
     const ParticleStore& p = world.particles;
     WorstOverlap worst{0, 0, false};
@@ -472,7 +483,7 @@ WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt
         ContactInput in;
         in.normal = gap.normal;
         in.overlap = gap.overlap;
-        const Vec3 arm = -r * gap.normal;  // centre to contact point
+        const Vec3 arm = -r * gap.normal; // centre to contact point
         // The particle's velocities are those of the half step t+dt/2, so the wall's surface
         // velocity is taken at the contact point of the half step too (x - v dt/2). Using x(t+dt)
         // would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball orbiting on a

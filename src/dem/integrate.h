@@ -50,7 +50,8 @@ inline void kick(ParticleStore& p, const Vec3& gravity, Real dt, StepHealth& hea
         {
             p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
             p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
-            finite = finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) && isFinite(p.angularVelocity[i]);
+            finite = finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) &&
+                     isFinite(p.angularVelocity[i]);
         }
         health.finite = finite;
         if (!finite)

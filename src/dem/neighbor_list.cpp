@@ -38,8 +38,9 @@ std::size_t NeighborList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
-           bytes(tangentialTorque) + bytes(leverFirst) + bytes(leverSecond) + bytes(rollingTorque) + bytes(firstStart) + bytes(secondStart) +
-           bytes(secondSlots) + bytes(effectiveMass) + bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_);
+           bytes(tangentialTorque) + bytes(leverFirst) + bytes(leverSecond) + bytes(rollingTorque) +
+           bytes(firstStart) + bytes(secondStart) + bytes(secondSlots) + bytes(effectiveMass) +
+           bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -110,41 +111,41 @@ void NeighborList::rebuild(const ParticleStore& particles)
     // (one per thread) collects its own pairs; the chunks are concatenated in order.
     const int chunks = std::min(loopThreads(n), 64);
     std::vector<std::vector<std::uint32_t>> chunkSecond(static_cast<std::size_t>(chunks));
-    parallelChunks(n, chunks,
-                   [&](int chunk, std::size_t begin, std::size_t end)
-                   {
-                       std::vector<std::uint32_t>& out = chunkSecond[static_cast<std::size_t>(chunk)];
-                       std::vector<std::uint32_t> scratch;
-                       for (std::size_t i = begin; i < end; ++i)
-                       {
-                           const std::size_t c = cellOf_[i];
-                           const std::size_t cx = c % nx, cy = (c / nx) % ny, cz = c / (nx * ny);
-                           const Vec3 xi = particles.position[i];
-                           const Real ri = particles.radius[i];
-                           scratch.clear();
-                           for (std::size_t z = (cz ? cz - 1 : 0); z <= std::min(cz + 1, nz - 1); ++z)
-                               for (std::size_t y = (cy ? cy - 1 : 0); y <= std::min(cy + 1, ny - 1); ++y)
-                               {
-                                   const std::size_t row = (z * ny + y) * nx;
-                                   const std::size_t xBegin = cx ? cx - 1 : 0, xEnd = std::min(cx + 1, nx - 1);
-                                   // Cells of one row are contiguous in cellParticles_.
-                                   for (std::uint32_t k = cellStart_[row + xBegin]; k < cellStart_[row + xEnd + 1];
-                                        ++k)
-                                   {
-                                       const std::uint32_t j = cellParticles_[k];
-                                       if (j <= i)
-                                           continue;
-                                       const Real reach = ri + particles.radius[j] + skin;
-                                       if (lengthSquared(xi - particles.position[j]) < reach * reach)
-                                           scratch.push_back(j);
-                                   }
-                               }
-                           std::sort(scratch.begin(), scratch.end());
-                           out.insert(out.end(), scratch.begin(), scratch.end());
-                           // Count of pairs of i, turned into offsets below.
-                           firstStart[i + 1] = static_cast<std::uint32_t>(scratch.size());
-                       }
-                   });
+    parallelChunks(
+        n, chunks,
+        [&](int chunk, std::size_t begin, std::size_t end)
+        {
+            std::vector<std::uint32_t>& out = chunkSecond[static_cast<std::size_t>(chunk)];
+            std::vector<std::uint32_t> scratch;
+            for (std::size_t i = begin; i < end; ++i)
+            {
+                const std::size_t c = cellOf_[i];
+                const std::size_t cx = c % nx, cy = (c / nx) % ny, cz = c / (nx * ny);
+                const Vec3 xi = particles.position[i];
+                const Real ri = particles.radius[i];
+                scratch.clear();
+                for (std::size_t z = (cz ? cz - 1 : 0); z <= std::min(cz + 1, nz - 1); ++z)
+                    for (std::size_t y = (cy ? cy - 1 : 0); y <= std::min(cy + 1, ny - 1); ++y)
+                    {
+                        const std::size_t row = (z * ny + y) * nx;
+                        const std::size_t xBegin = cx ? cx - 1 : 0, xEnd = std::min(cx + 1, nx - 1);
+                        // Cells of one row are contiguous in cellParticles_.
+                        for (std::uint32_t k = cellStart_[row + xBegin]; k < cellStart_[row + xEnd + 1]; ++k)
+                        {
+                            const std::uint32_t j = cellParticles_[k];
+                            if (j <= i)
+                                continue;
+                            const Real reach = ri + particles.radius[j] + skin;
+                            if (lengthSquared(xi - particles.position[j]) < reach * reach)
+                                scratch.push_back(j);
+                        }
+                    }
+                std::sort(scratch.begin(), scratch.end());
+                out.insert(out.end(), scratch.begin(), scratch.end());
+                // Count of pairs of i, turned into offsets below.
+                firstStart[i + 1] = static_cast<std::uint32_t>(scratch.size());
+            }
+        });
     for (std::size_t i = 0; i < n; ++i)
         firstStart[i + 1] += firstStart[i];
     const std::size_t pairCount = firstStart[n];
@@ -197,7 +198,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
         const Real mi = particles.mass[first[k]], mj = particles.mass[second[k]];
         effectiveMass[k] = mi * mj / (mi + mj);
     }
-    touchingScratch.clear();  // sized by the scalar force path when it runs
+    touchingScratch.clear(); // sized by the scalar force path when it runs
 
     // Gather adjacency: for each particle, the slots where it is second, ascending.
     for (std::size_t k = 0; k < pairCount; ++k)

@@ -31,28 +31,28 @@ namespace veridem::dem
 class NeighborList
 {
   public:
-    Real skin = 0;  // extra search distance beyond touching [m]
-    bool keepRollingHistory = false;  // store a rolling spring per slot (EPSD rolling model in use)
+    Real skin = 0;                   // extra search distance beyond touching [m]
+    bool keepRollingHistory = false; // store a rolling spring per slot (EPSD rolling model in use)
 
-    std::vector<std::uint32_t> first;     // i of each pair (sorted, i < j)
-    std::vector<std::uint32_t> second;    // j of each pair
-    std::vector<Vec3> tangentialSpring;   // history per pair slot [m]
-    std::vector<Vec3> rollingSpring;      // history per pair slot [N m] (empty unless keepRollingHistory)
+    std::vector<std::uint32_t> first;   // i of each pair (sorted, i < j)
+    std::vector<std::uint32_t> second;  // j of each pair
+    std::vector<Vec3> tangentialSpring; // history per pair slot [m]
+    std::vector<Vec3> rollingSpring;    // history per pair slot [N m] (empty unless keepRollingHistory)
 
     // Per-slot effective mass m* = m_i m_j / (m_i + m_j) [kg], set on a rebuild (the contact law's
     // expression, so the same bits), for the four-lane path.
     std::vector<Real> effectiveMass;
 
     // Per-step outputs, one entry per slot (zero for slots not in contact).
-    std::vector<Vec3> force;           // on the first particle [N] (the second gets -force)
+    std::vector<Vec3> force; // on the first particle [N] (the second gets -force)
     // The torques are assembled by the gather: on the first particle  rolling - leverFirst (n x Ft),
     // on the second  -rolling - leverSecond (n x Ft)  (lever arms l_i, l_j: forces.cpp). Storing
     // the three parts costs 40 bytes per slot instead of 48 for two torques.
-    std::vector<Vec3> tangentialTorque;  // n x Ft [N m]
-    std::vector<Real> leverFirst;        // l_i [m]
-    std::vector<Real> leverSecond;       // l_j [m]
-    std::vector<Vec3> rollingTorque;     // on the first particle [N m] (empty unless keepRollingTorque)
-    bool keepRollingTorque = false;      // some pair has a rolling-resistance model
+    std::vector<Vec3> tangentialTorque; // n x Ft [N m]
+    std::vector<Real> leverFirst;       // l_i [m]
+    std::vector<Real> leverSecond;      // l_j [m]
+    std::vector<Vec3> rollingTorque;    // on the first particle [N m] (empty unless keepRollingTorque)
+    bool keepRollingTorque = false;     // some pair has a rolling-resistance model
 
     // Force-loop bookkeeping: whether the slot's outputs/history may be non-zero (cleared when the
     // slot is found open, so an open slot is written once, not every step), and room for each
@@ -61,9 +61,10 @@ class NeighborList
     std::vector<std::uint32_t> touchingScratch;
 
     // Gather adjacency (CSR), rebuilt with the list.
-    std::vector<std::uint32_t> firstStart;   // slots [firstStart[p], firstStart[p+1]) have first == p
-    std::vector<std::uint32_t> secondStart;  // secondSlots[secondStart[p] .. secondStart[p+1]) have second == p
-    std::vector<std::uint32_t> secondSlots;  // ascending within each particle
+    std::vector<std::uint32_t> firstStart; // slots [firstStart[p], firstStart[p+1]) have first == p
+    std::vector<std::uint32_t>
+        secondStart; // secondSlots[secondStart[p] .. secondStart[p+1]) have second == p
+    std::vector<std::uint32_t> secondSlots; // ascending within each particle
 
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;

@@ -31,8 +31,7 @@ inline int loopThreads(std::size_t count)
 }
 
 /// body(k) for k in [0, count), statically scheduled.
-template <class Body>
-inline void parallelFor(std::size_t count, Body&& body)
+template <class Body> inline void parallelFor(std::size_t count, Body&& body)
 {
 #ifdef _OPENMP
     if (loopThreads(count) > 1)
@@ -56,8 +55,7 @@ inline std::size_t chunkBegin(std::size_t count, int chunks, int c)
 
 /// body(chunk, begin, end) for `chunks` contiguous ranges of [0, count), one per thread. The
 /// caller combines per-chunk results in chunk order.
-template <class Body>
-inline void parallelChunks(std::size_t count, int chunks, Body&& body)
+template <class Body> inline void parallelChunks(std::size_t count, int chunks, Body&& body)
 {
 #ifdef _OPENMP
     if (chunks > 1)

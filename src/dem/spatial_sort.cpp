@@ -24,8 +24,7 @@ std::uint64_t spreadBits(std::uint64_t v)
     return v;
 }
 
-template <class T>
-void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order)
+template <class T> void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order)
 {
     std::vector<T> sorted(values.size());
     for (std::size_t k = 0; k < order.size(); ++k)
@@ -38,7 +37,8 @@ void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order)
 std::vector<std::uint32_t> sortParticlesSpatially(World& world, Real cellSize)
 {
     if (world.prepared)
-        throw InputError("sortParticlesSpatially: call it before the first step (contact history would be lost)");
+        throw InputError(
+            "sortParticlesSpatially: call it before the first step (contact history would be lost)");
     ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     std::vector<std::uint32_t> order(n);
@@ -49,7 +49,8 @@ std::vector<std::uint32_t> sortParticlesSpatially(World& world, Real cellSize)
     Real maxRadius = 0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        lo = {std::fmin(lo.x, p.position[i].x), std::fmin(lo.y, p.position[i].y), std::fmin(lo.z, p.position[i].z)};
+        lo = {std::fmin(lo.x, p.position[i].x), std::fmin(lo.y, p.position[i].y),
+              std::fmin(lo.z, p.position[i].z)};
         maxRadius = std::fmax(maxRadius, p.radius[i]);
     }
     if (cellSize <= 0)
@@ -65,7 +66,8 @@ std::vector<std::uint32_t> sortParticlesSpatially(World& world, Real cellSize)
         code[i] = spreadBits(cellIndex(x.x, lo.x)) | spreadBits(cellIndex(x.y, lo.y)) << 1 |
                   spreadBits(cellIndex(x.z, lo.z)) << 2;
     }
-    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return code[a] < code[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return code[a] < code[b]; });
     permute(p.position, order);
     permute(p.velocity, order);
     permute(p.angularVelocity, order);

@@ -73,7 +73,7 @@ TimeStepEstimate estimateTimeStep(const World& world, Real characteristicSpeed)
         minRadius[m] = std::fmin(minRadius[m], p.radius[i]);
         minInertia[m] = std::fmin(minInertia[m], 1.0 / p.invInertia[i]); // twist: I alone
     }
-    PairTable table = world.pairs;  // with any [[pair]] overrides once prepared
+    PairTable table = world.pairs; // with any [[pair]] overrides once prepared
     if (table.count() != materialCount)
         table.build(world.materials);
     TimeStepEstimate estimate{inf, inf, inf, ""};

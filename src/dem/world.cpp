@@ -121,19 +121,19 @@ void step(World& world, Real dt)
 
     StageClock clock(world.profile);
 
-    kickDrift(world.particles, world.gravity, dt);                // v(t+dt/2), x(t+dt)
-    moveWalls(world.walls, dt);                                   // wall motion to t+dt
+    kickDrift(world.particles, world.gravity, dt); // v(t+dt/2), x(t+dt)
+    moveWalls(world.walls, dt);                    // wall motion to t+dt
     clock.lap(&StepProfile::integration);
-    if (contactListsNeedRebuild(world))                           // Verlet + wall lists, history merge
+    if (contactListsNeedRebuild(world)) // Verlet + wall lists, history merge
         rebuildContactLists(world);
     clock.lap(&StepProfile::neighbours);
-    computePairForces(world, dt);                                 // 3. per-contact forces at t+dt
+    computePairForces(world, dt); // 3. per-contact forces at t+dt
     clock.lap(&StepProfile::pairForces);
     computeWallForces(world, dt);
     clock.lap(&StepProfile::wallForces);
-    gatherContactForces(world);                                   // 4. per-particle sums, fixed order
+    gatherContactForces(world); // 4. per-particle sums, fixed order
     clock.lap(&StepProfile::gather);
-    kick(world.particles, world.gravity, dt, world.health);       // v(t+dt)
+    kick(world.particles, world.gravity, dt, world.health); // v(t+dt)
     clock.lap(&StepProfile::integration);
 
     world.time += dt;

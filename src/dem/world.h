@@ -18,10 +18,10 @@ namespace veridem::dem
 /// Health of the last force evaluation, checked by the driver after each step.
 struct StepHealth
 {
-    Real maxOverlapRatio = 0;            // max over contacts of overlap / smaller radius [-]
-    std::uint32_t worstParticle = 0;     // particle with that overlap
-    bool finite = true;                  // all positions and velocities finite
-    std::uint32_t firstNonFinite = 0;    // first particle that is not
+    Real maxOverlapRatio = 0;         // max over contacts of overlap / smaller radius [-]
+    std::uint32_t worstParticle = 0;  // particle with that overlap
+    bool finite = true;               // all positions and velocities finite
+    std::uint32_t firstNonFinite = 0; // first particle that is not
 };
 
 /// Wall-clock time spent in each stage of step() [s], accumulated while `enabled` (off by
@@ -29,11 +29,11 @@ struct StepHealth
 struct StepProfile
 {
     bool enabled = false;
-    double integration = 0;  // kick-drift, wall motion, kick
-    double neighbours = 0;   // rebuild test + Verlet list rebuild + history merge
-    double pairForces = 0;   // per-contact pair forces (stage 3)
-    double wallForces = 0;   // per-contact wall forces (stage 3)
-    double gather = 0;       // per-particle sums in a fixed order (stage 4)
+    double integration = 0; // kick-drift, wall motion, kick
+    double neighbours = 0;  // rebuild test + Verlet list rebuild + history merge
+    double pairForces = 0;  // per-contact pair forces (stage 3)
+    double wallForces = 0;  // per-contact wall forces (stage 3)
+    double gather = 0;      // per-particle sums in a fixed order (stage 4)
 };
 
 struct World
@@ -44,18 +44,18 @@ struct World
     PairTable pairs;
     NeighborList neighbors;
     WallContactList wallContacts;
-    Vec3 gravity{0, 0, -9.81};  // [m/s^2]
-    Real time = 0;              // [s]
+    Vec3 gravity{0, 0, -9.81}; // [m/s^2]
+    Real time = 0;             // [s]
     std::uint64_t stepCount = 0;
     StepHealth health;
     StepProfile profile;
-    bool batchedContactKernel = true;  // four contacts at a time where the law allows (same bits as
-                                       // the scalar path, which false selects; forces.cpp)
+    bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
+                                      // the scalar path, which false selects; forces.cpp)
     bool prepared = false;
 
     /// Adds a material; returns its id.
     std::uint32_t addMaterial(const Material& m);
-    std::uint32_t materialId(const std::string& name) const;  // throws InputError if unknown
+    std::uint32_t materialId(const std::string& name) const; // throws InputError if unknown
 };
 
 /// Mixes the pair table, builds the neighbour list and computes the initial forces. Called by the

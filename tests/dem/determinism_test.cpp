@@ -20,8 +20,9 @@ namespace veridem::dem
 namespace
 {
 
-/// A jittered lattice of 13^3 = 2197 spheres (above kParallelThreshold, so two threads do split the loops) (r = 1 mm) with random velocities and spins, packed tightly
-/// in a box with a floor, so that many contacts open and close and slide within 1000 steps.
+/// A jittered lattice of 13^3 = 2197 spheres (above kParallelThreshold, so two threads do split the loops) (r
+/// = 1 mm) with random velocities and spins, packed tightly in a box with a floor, so that many contacts open
+/// and close and slide within 1000 steps.
 World jostlingBox(bool sorted)
 {
     World world;
@@ -85,7 +86,7 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBitsAfter1000Steps)
     const World one = runOn(1, 1000);
     const World two = runOn(2, 1000);
     ASSERT_GT(one.neighbors.size(), 0u);
-    EXPECT_GT(one.health.maxOverlapRatio, 0.0);  // contacts are active at the end
+    EXPECT_GT(one.health.maxOverlapRatio, 0.0); // contacts are active at the end
     EXPECT_TRUE(sameBits(one.particles.position, two.particles.position));
     EXPECT_TRUE(sameBits(one.particles.velocity, two.particles.velocity));
     EXPECT_TRUE(sameBits(one.particles.angularVelocity, two.particles.angularVelocity));

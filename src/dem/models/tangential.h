@@ -40,12 +40,14 @@ VERIDEM_HOT_INLINE Vec3 projectSpringToTangentPlane(const Vec3& spring, const Ve
 
 /// kt [N/m], etaT [N s/m], mu [-], normalForce Fn [N] (clipped to >= 0 here),
 /// tangentialVelocity vt [m/s] (in the tangent plane), dt [s].
-VERIDEM_HOT_INLINE TangentialResult coulombSpringForce(Real kt, Real etaT, Real mu, Real normalForce, Vec3 spring,
-                                           const Vec3& normal, const Vec3& tangentialVelocity, Real dt)
+VERIDEM_HOT_INLINE TangentialResult coulombSpringForce(Real kt, Real etaT, Real mu, Real normalForce,
+                                                       Vec3 spring, const Vec3& normal,
+                                                       const Vec3& tangentialVelocity, Real dt)
 {
     spring = projectSpringToTangentPlane(spring, normal) + tangentialVelocity * dt;
     const Vec3 trial = -kt * spring - etaT * tangentialVelocity;
-    const Real cap = mu * (normalForce > 0 ? normalForce : 0.0);  // mu max(Fn, 0), NaN -> 0 like fmax (inlined)
+    const Real cap =
+        mu * (normalForce > 0 ? normalForce : 0.0); // mu max(Fn, 0), NaN -> 0 like fmax (inlined)
     const Real trialLength2 = lengthSquared(trial);
     if (trialLength2 <= cap * cap)
         return {trial, spring, false};
