@@ -260,11 +260,8 @@ int main(int argc, char** argv)
                     world.neighbors.size(),
                     static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
-        const auto touching = std::count_if(world.neighbors.force.begin(), world.neighbors.force.end(),
-                                            [](const Vec3& f) { return !(f == Vec3{}); });
-        const auto wallTouching =
-            std::count_if(world.wallContacts.force.begin(), world.wallContacts.force.end(),
-                          [](const Vec3& f) { return !(f == Vec3{}); });
+        const auto touching = static_cast<std::ptrdiff_t>(world.health.touchingPairs);
+        const auto wallTouching = static_cast<std::ptrdiff_t>(world.health.touchingWalls);
         std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n",
                     touching, static_cast<double>(touching) / static_cast<double>(n),
                     world.wallContacts.size(), wallTouching);
@@ -281,8 +278,8 @@ int main(int argc, char** argv)
             std::printf("  time by stage (timers on):\n");
             share("neighbour rebuild", p.neighbours);
             share("pair forces", p.pairForces);
+            share("cross-block sums", p.gather);
             share("wall forces", p.wallForces);
-            share("gather (fixed order)", p.gather);
             share("integration", p.integration);
         }
         std::fflush(stdout);

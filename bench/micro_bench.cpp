@@ -1,5 +1,5 @@
 // Google Benchmark micro-benchmarks (docs/performance.md): the contact law alone, the pair-force
-// loop (scalar and four-lane paths), the fixed-order gather, and the neighbour search.
+// loop (scalar and four-lane paths), the cross-block sums, and the neighbour search.
 //
 //   ./build/release/bench/veridem_micro_bench [--benchmark_filter=REGEX]
 #include "dem/contact_law.h"
@@ -95,16 +95,16 @@ void pairForces(benchmark::State& state, bool batched)
 BENCHMARK_CAPTURE(pairForces, scalar, false)->Arg(16)->Arg(28);
 BENCHMARK_CAPTURE(pairForces, batched, true)->Arg(16)->Arg(28);
 
-/// Stage 4: the per-particle sums in a fixed order.
-void gather(benchmark::State& state)
+/// Stage 4: the per-particle sums of the cross-block contacts in a fixed order.
+void crossBlockSums(benchmark::State& state)
 {
     World world = latticeWorld(static_cast<int>(state.range(0)));
     computePairForces(world, 1e-5);
     for (auto _ : state)
-        gatherContactForces(world);
+        addCrossBlockForces(world);
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles.size()));
 }
-BENCHMARK(gather)->Arg(16)->Arg(28);
+BENCHMARK(crossBlockSums)->Arg(16)->Arg(28);
 
 /// Neighbour search: a full rebuild of the Verlet list with history merge.
 void neighbourRebuild(benchmark::State& state)

@@ -7,9 +7,12 @@
 //    l_i = r_i d / (r_i + r_j), so l_i + l_j = d and the tangential force conserves the total
 //    angular momentum exactly (with r_i alone it would be violated by delta n x Ft).
 //
-// Parallel layout (STYLE 3.4): stage 3 loops over contact slots and writes only the slot's own
-// outputs and history; stage 4 loops over particles and reads the slots in a fixed order. The
-// health record (largest overlap) is reduced per chunk and combined in chunk order, so it too is
+// Parallel layout (STYLE 3.4, neighbor_list.h): the pair loop runs over fixed blocks of particles,
+// each thread a contiguous range of blocks, and adds every contact straight into its particles'
+// force and torque, except the share of a second particle in a later block, which goes to the
+// slot's deferred entry; a per-particle pass then adds the deferred entries in slot order, and the
+// wall contacts, per particle, in slot order. No sum depends on the thread schedule. The health
+// record (largest overlap) is reduced per chunk and combined in chunk order, so it too is
 // independent of the thread count.
 #include "dem/forces.h"
 
@@ -60,42 +63,90 @@ ExtraInputs extraInputsFor(const PairParams& params)
             params.rollingModel == RollingModel::ConstantTorque, params.rollingModel == RollingModel::Epsd};
 }
 
+/// Where the pair loop writes. Array bases are held in locals: a byte store (mayBeActive) may alias
+/// anything, so GCC would otherwise reload every vector's pointer after it.
+struct PairSink
+{
+    Vec3* force;                        // particle sums [N]
+    Vec3* torque;                       // [N m]
+    const std::uint32_t* deferredIndex; // per slot, or NeighborList::kInBlock
+    Vec3* deferredForce;                // on the second particle of a cross-block slot [N]
+    Vec3* deferredTorque;               // [N m]
+    Vec3* spring;                       // tangential spring per slot [m]
+    std::uint8_t* mayBeActive;
+
+    explicit PairSink(World& world)
+        : force(world.particles.force.data()), torque(world.particles.torque.data()),
+          deferredIndex(world.neighbors.deferredIndex.data()),
+          deferredForce(world.neighbors.deferredForce.data()),
+          deferredTorque(world.neighbors.deferredTorque.data()),
+          spring(world.neighbors.tangentialSpring.data()), mayBeActive(world.neighbors.mayBeActive.data())
+    {
+    }
+
+    /// Adds the contact of slot k: force f [N] on i and -f on j, torques ti on i and tj on j [N m].
+    void add(std::uint32_t k, std::uint32_t i, std::uint32_t j, const Vec3& f, const Vec3& ti,
+             const Vec3& tj) const
+    {
+        force[i] += f;
+        torque[i] += ti;
+        const std::uint32_t d = deferredIndex[k];
+        if (d == NeighborList::kInBlock)
+        {
+            force[j] -= f;
+            torque[j] += tj;
+        }
+        else
+        {
+            deferredForce[d] = -f;
+            deferredTorque[d] = tj;
+        }
+    }
+
+    /// Slot k is open: its history is forgotten and a deferred entry contributes nothing.
+    void open(NeighborList& list, std::size_t k) const
+    {
+        list.setHistory(k, ContactHistory{});
+        const std::uint32_t d = deferredIndex[k];
+        if (d != NeighborList::kInBlock)
+        {
+            deferredForce[d] = Vec3{};
+            deferredTorque[d] = Vec3{};
+        }
+        mayBeActive[k] = 0;
+    }
+};
+
 // ---------------------------------------------------------------------------------------------
 // Four contacts at a time (linear spring-dashpot, no rolling resistance: the reference bed's law).
 //
-// One contact is a chain of ~12 dependent divisions and square roots (normal, lever arms, m*, the
+// One contact is a chain of dependent divisions and square roots (normal, lever arms, m*, the
 // end-of-step normal speed, the spring rotation, the Coulomb cap), so a scalar loop waits on
-// latency. Here the same operations run on four independent contacts in the lanes of GCC vector
-// types (two SSE2 registers each, or one AVX register with VERIDEM_NATIVE): every lane performs
-// exactly the IEEE operations of evaluateContact() in the same order, branches become selects, so
-// the bits are those of the scalar path (tests/dem/contact_batch_test.cpp checks it). Contacts
-// with another law go through the scalar path.
+// latency. Here the same operations run on four independent contacts in the lanes of a GCC vector
+// type (two SSE2 registers, or one AVX register with VERIDEM_NATIVE): every lane performs exactly
+// the IEEE operations of the scalar path (pairContactScalar + evaluateContact) in the same order,
+// branches become selects, so the bits are those of the scalar path
+// (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar path.
 // ---------------------------------------------------------------------------------------------
-#if defined(__AVX__)
-using Lanes = double __attribute__((vector_size(32))); // same type as __m256d
+using Lanes = double __attribute__((vector_size(32)));
 using LaneMask = long long __attribute__((vector_size(32)));
 constexpr std::size_t kLanes = 4;
-inline Lanes laneSqrt(Lanes x)
-{
-    return _mm256_sqrt_pd(x);
-}
-#else
-using Lanes = double __attribute__((vector_size(16))); // same type as __m128d
-using LaneMask = long long __attribute__((vector_size(16)));
-constexpr std::size_t kLanes = 2;
-inline Lanes laneSqrt(Lanes x)
-{
-    return _mm_sqrt_pd(x);
-} // correctly rounded, as std::sqrt
-#endif
 
-/// True if pairs of these parameters may take the four-lane path (all pairs must, or none does).
+inline Lanes laneSqrt(Lanes x) // correctly rounded, as std::sqrt (one vsqrtpd with -fno-math-errno)
+{
+    Lanes r;
+    for (std::size_t l = 0; l < kLanes; ++l)
+        r[l] = __builtin_sqrt(x[l]);
+    return r;
+}
+
+/// True if pairs of these parameters may take the lane path (all pairs must, or none does).
 bool batchable(const PairParams& params)
 {
     return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
 }
 
-constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of 4); ~25 KB of lanes, in L1
+constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of kLanes); ~25 KB, in L1
 
 /// Per-batch lanes: inputs are gathered here with scalar stores, read back as vectors long after
 /// (a vector load right after scalar stores to the same bytes misses store forwarding).
@@ -105,12 +156,13 @@ struct PairBatch
     alignas(32) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
     alignas(32) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
     alignas(32) double effectiveMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    // per-lane pair parameters (filled only if there is more than one material pair)
     alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
         mu[kBatch];
     // outputs
-    alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch], ttx[kBatch], tty[kBatch], ttz[kBatch];
-    alignas(32) double leverI[kBatch], leverJ[kBatch], springX[kBatch], springY[kBatch], springZ[kBatch];
-    alignas(32) double ratio[kBatch];
+    alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch];
+    alignas(32) double tix[kBatch], tiy[kBatch], tiz[kBatch], tjx[kBatch], tjy[kBatch], tjz[kBatch];
+    alignas(32) double springX[kBatch], springY[kBatch], springZ[kBatch], ratio[kBatch];
     std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
 
@@ -140,15 +192,29 @@ inline void store(double* a, const Lanes& v)
 {
     std::memcpy(a, &v, sizeof v);
 }
+inline Lanes broadcast(double x)
+{
+    return Lanes{} + x;
+}
+
+/// Per-chunk health: the largest overlap ratio (first slot in order wins ties) and the number of
+/// touching contacts. Trivial on purpose: per-chunk arrays of it are not cleared every step.
+struct ChunkHealth
+{
+    WorstOverlap worst;
+    std::size_t touching;
+};
 
 /// Evaluates the touching contacts in lanes [0, count) of `b` (count <= kBatch; slot, i, j and the
-/// separation and radii already collected by the caller; the law batchable) and writes their
-/// outputs exactly as the scalar path does. `uniform`: the pair parameters if there is a single
-/// material pair (skips the table look-up), else null.
-[[gnu::noinline]] void pairContactsBatch(const World& world, NeighborList& list, Real dt, std::size_t count,
-                                         WorstOverlap& worst, PairBatch& b, const PairParams* uniform)
+/// separation and radii already collected by the caller; the law batchable) and adds them into
+/// the sink in lane order, exactly as the scalar path does. `uniform`: the pair parameters if
+/// there is a single material pair (no table look-up), else null.
+[[gnu::noinline, gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void
+pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t count, WorstOverlap& worst,
+                  PairBatch& b, const PairParams* uniform)
 {
     const ParticleStore& p = world.particles;
+    const NeighborList& list = world.neighbors;
     const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
     for (std::size_t m = count; m < padded; ++m)
     {
@@ -162,12 +228,14 @@ inline void store(double* a, const Lanes& v)
         b.ri[m] = b.ri[count - 1];
         b.rj[m] = b.rj[count - 1];
     }
+    const Vec3* const velocity = p.velocity.data();
+    const Vec3* const angularVelocity = p.angularVelocity.data();
+    const Real* const slotMass = list.effectiveMass.data();
     for (std::size_t m = 0; m < padded; ++m)
     {
         const std::uint32_t k = b.slot[m], i = b.i[m], j = b.j[m];
-        const PairParams& pp = uniform ? *uniform : world.pairs(p.material[i], p.material[j]);
-        const Vec3 &vi = p.velocity[i], &vj = p.velocity[j];
-        const Vec3 &wi = p.angularVelocity[i], &wj = p.angularVelocity[j], &h = list.tangentialSpring[k];
+        const Vec3 &vi = velocity[i], &vj = velocity[j];
+        const Vec3 &wi = angularVelocity[i], &wj = angularVelocity[j], &h = sink.spring[k];
         b.dvx[m] = vi.x - vj.x;
         b.dvy[m] = vi.y - vj.y;
         b.dvz[m] = vi.z - vj.z;
@@ -177,33 +245,42 @@ inline void store(double* a, const Lanes& v)
         b.wjx[m] = wj.x;
         b.wjy[m] = wj.y;
         b.wjz[m] = wj.z;
-        b.effectiveMass[m] = list.effectiveMass[k]; // m_i m_j / (m_i + m_j), per slot
+        b.effectiveMass[m] = slotMass[k]; // m_i m_j / (m_i + m_j), per slot
         b.hx[m] = h.x;
         b.hy[m] = h.y;
         b.hz[m] = h.z;
-        b.kn[m] = pp.kn;
-        b.ktRatio[m] = pp.ktRatio;
-        b.rate[m] = pp.dampingRate;
-        b.fromRatio[m] = 2.0 * pp.dampingRatio;
-        b.etaRatio[m] = pp.tangentialDampingRatio;
-        b.mu[m] = pp.mu;
     }
+    if (!uniform)
+        for (std::size_t m = 0; m < padded; ++m)
+        {
+            const PairParams& pp = world.pairs(p.material[b.i[m]], p.material[b.j[m]]);
+            b.kn[m] = pp.kn;
+            b.ktRatio[m] = pp.ktRatio;
+            b.rate[m] = pp.dampingRate;
+            b.fromRatio[m] = 2.0 * pp.dampingRatio;
+            b.etaRatio[m] = pp.tangentialDampingRatio;
+            b.mu[m] = pp.mu;
+        }
+    const auto parameter = [&](double PairParams::*field, const double* perLane, std::size_t m)
+    { return uniform ? broadcast(uniform->*field) : load(perLane + m); };
 
-    const Lanes zero = {}, one = zero + 1.0;
+    const Lanes zero = {}, one = zero + 1.0, negativeZero = -zero;
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
-        // Geometry (the scalar path in computePairForces).
+        // Geometry (as pairContactScalar).
         const Lanes sx = load(b.sx + m), sy = load(b.sy + m), sz = load(b.sz + m);
         const Lanes ri = load(b.ri + m), rj = load(b.rj + m);
         const Lanes touching = ri + rj;
         const Lanes distance2 = sx * sx + sy * sy + sz * sz;
         const Lanes distance = laneSqrt(distance2);
         const LaneMask positive = distance > zero;
-        const Lanes nx = positive ? sx / distance : zero;
-        const Lanes ny = positive ? sy / distance : zero;
-        const Lanes nz = positive ? sz / distance : one;
+        const Lanes inverseDistance = one / distance;
+        const Lanes nx = positive ? sx * inverseDistance : zero;
+        const Lanes ny = positive ? sy * inverseDistance : zero;
+        const Lanes nz = positive ? sz * inverseDistance : one;
         const Lanes overlap = touching - distance;
-        const Lanes leverI = ri * distance / touching, leverJ = rj * distance / touching;
+        const Lanes share = distance / touching;
+        const Lanes leverI = ri * share, leverJ = rj * share;
         const Lanes ax = load(b.wix + m) * leverI + load(b.wjx + m) * leverJ;
         const Lanes ay = load(b.wiy + m) * leverI + load(b.wjy + m) * leverJ;
         const Lanes az = load(b.wiz + m) * leverI + load(b.wjz + m) * leverJ;
@@ -213,14 +290,17 @@ inline void store(double* a, const Lanes& v)
         const Lanes effectiveMass = load(b.effectiveMass + m);
 
         // contactCoefficients(), linear branch.
-        const Lanes kn = load(b.kn + m);
-        const Lanes kt = load(b.ktRatio + m) * kn;
-        const Lanes rate = load(b.rate + m);
+        const Lanes kn = parameter(&PairParams::kn, b.kn, m);
+        const Lanes kt = parameter(&PairParams::ktRatio, b.ktRatio, m) * kn;
+        const Lanes rate = parameter(&PairParams::dampingRate, b.rate, m);
         const LaneMask fromRate = rate >= zero;
         Lanes etaN = rate * effectiveMass;
         if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
-            etaN = fromRate ? etaN : load(b.fromRatio + m) * laneSqrt(effectiveMass * kn);
-        const Lanes etaT = load(b.etaRatio + m) * etaN;
+        {
+            const Lanes fromRatio = uniform ? broadcast(2.0 * uniform->dampingRatio) : load(b.fromRatio + m);
+            etaN = fromRate ? etaN : fromRatio * laneSqrt(effectiveMass * kn);
+        }
+        const Lanes etaT = parameter(&PairParams::tangentialDampingRatio, b.etaRatio, m) * etaN;
 
         // evaluateContact(): 1. normal force.
         const Lanes normalSpeed = rvx * nx + rvy * ny + rvz * nz;
@@ -254,7 +334,7 @@ inline void store(double* a, const Lanes& v)
         const Lanes springX = px + vtx * dt, springY = py + vty * dt, springZ = pz + vtz * dt;
         const Lanes trialX = -kt * springX - etaT * vtx, trialY = -kt * springY - etaT * vty,
                     trialZ = -kt * springZ - etaT * vtz;
-        const Lanes cap = load(b.mu + m) * (normalForce > zero ? normalForce : zero);
+        const Lanes cap = parameter(&PairParams::mu, b.mu, m) * (normalForce > zero ? normalForce : zero);
         const Lanes trialLength2 = trialX * trialX + trialY * trialY + trialZ * trialZ;
         const LaneMask sticks = trialLength2 <= cap * cap;
         Lanes ftx = trialX, fty = trialY, ftz = trialZ, newSpringX = springX, newSpringY = springY,
@@ -279,193 +359,205 @@ inline void store(double* a, const Lanes& v)
         store(b.fy + m, normalForce * ny + fty);
         store(b.fz + m, normalForce * nz + ftz);
 
-        // n x Ft and the lever arms; the gather forms the torques (no rolling resistance here).
-        store(b.ttx + m, ny * ftz - nz * fty);
-        store(b.tty + m, nz * ftx - nx * ftz);
-        store(b.ttz + m, nx * fty - ny * ftx);
-        store(b.leverI + m, leverI);
-        store(b.leverJ + m, leverJ);
+        // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j, rolling = 0 here.
+        const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
+        store(b.tix + m, zero - leverI * ttx);
+        store(b.tiy + m, zero - leverI * tty);
+        store(b.tiz + m, zero - leverI * ttz);
+        store(b.tjx + m, negativeZero - leverJ * ttx);
+        store(b.tjy + m, negativeZero - leverJ * tty);
+        store(b.tjz + m, negativeZero - leverJ * ttz);
         store(b.ratio + m, overlap / (rj < ri ? rj : ri));
     }
 
-    std::uint8_t* const mayBeActive = list.mayBeActive.data(); // (a byte store aliases anything:
-    Vec3* const spring = list.tangentialSpring.data();         //  array bases are kept in locals)
-    Vec3* const force = list.force.data();
-    Vec3* const tangentialTorque = list.tangentialTorque.data();
-    Real* const leverFirst = list.leverFirst.data();
-    Real* const leverSecond = list.leverSecond.data();
     for (std::size_t m = 0; m < count; ++m)
     {
         const std::uint32_t k = b.slot[m];
-        mayBeActive[k] = 1;
-        spring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
-        force[k] = {b.fx[m], b.fy[m], b.fz[m]};
-        tangentialTorque[k] = {b.ttx[m], b.tty[m], b.ttz[m]};
-        leverFirst[k] = b.leverI[m];
-        leverSecond[k] = b.leverJ[m];
+        sink.mayBeActive[k] = 1;
+        sink.spring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
+        sink.add(k, b.i[m], b.j[m], {b.fx[m], b.fy[m], b.fz[m]}, {b.tix[m], b.tiy[m], b.tiz[m]},
+                 {b.tjx[m], b.tjy[m], b.tjz[m]});
         if (b.ratio[m] > worst.ratio)
             worst = {b.ratio[m], b.i[m], true};
     }
+}
+
+/// One touching contact through the general contact law (any model), added into the sink.
+void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
+                       WorstOverlap& worst)
+{
+    const ParticleStore& p = world.particles;
+    const std::uint32_t i = list.first[k], j = list.second[k];
+    sink.mayBeActive[k] = 1;
+    const Vec3 separation = p.position[i] - p.position[j];
+    const Real ri = p.radius[i], rj = p.radius[j];
+    const Real touching = ri + rj;
+    const Real distance2 = lengthSquared(separation);
+    const PairParams& params = world.pairs(p.material[i], p.material[j]);
+    const ExtraInputs extra = extraInputsFor(params);
+    const Real distance = std::sqrt(distance2);
+    const Real inverseDistance = 1.0 / distance;
+    ContactInput in;
+    in.normal = distance > 0 ? Vec3{separation.x * inverseDistance, separation.y * inverseDistance,
+                                    separation.z * inverseDistance}
+                             : Vec3{0, 0, 1};
+    in.overlap = touching - distance;
+    const Real share = distance / touching;
+    const Real leverI = ri * share, leverJ = rj * share;
+    in.relativeVelocity = p.velocity[i] - p.velocity[j] -
+                          cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
+    in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+    in.effectiveMass = list.effectiveMass[k];
+    if (extra.effectiveRadius)
+        in.effectiveRadius = ri * rj / touching;
+    if (extra.spinInertia)
+        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+    if (extra.rollingInertia)
+        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
+                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+
+    ContactHistory history = list.history(k);
+    const ContactOutput out = evaluateContact(params, in, history, dt);
+    list.setHistory(k, history);
+
+    const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
+    sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,
+             -out.rollingTorque - leverJ * tangentialTorque);
+
+    const Real ratio = in.overlap / std::min(ri, rj);
+    if (ratio > worst.ratio)
+        worst = {ratio, i, true};
 }
 
 } // namespace
 
 void computePairForces(World& world, Real dt)
 {
-    const ParticleStore& p = world.particles;
+    ParticleStore& p = world.particles;
     NeighborList& list = world.neighbors;
     world.health.maxOverlapRatio = 0;
-    const std::size_t pairCount = list.size();
-    if (pairCount == 0)
+    world.health.touchingPairs = 0;
+    const std::size_t n = p.size();
+    if (n == 0)
         return;
+    const std::size_t pairCount = list.size();
     bool allBatchable = world.batchedContactKernel;
     for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
             allBatchable = allBatchable && batchable(world.pairs(a, b));
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
-    if (!allBatchable)
-        list.touchingScratch.resize(pairCount); // the scalar path's per-chunk lists of touching slots
-    const int chunks = std::min(loopThreads(pairCount), kMaxChunks);
-    WorstOverlap worst[kMaxChunks];
+
+    // Chunks: contiguous ranges of whole blocks, one per thread, balanced by slot count.
+    constexpr std::size_t B = NeighborList::kBlockParticles;
+    const std::size_t blocks = (n + B - 1) / B;
+    const int chunks = static_cast<int>(std::min(
+        {static_cast<std::size_t>(loopThreads(std::max(pairCount, n))), blocks, std::size_t{kMaxChunks}}));
+    std::size_t blockEdge[kMaxChunks + 1];
+    blockEdge[0] = 0;
+    blockEdge[chunks] = blocks;
+    for (int c = 1; c < chunks; ++c)
+    {
+        const std::size_t target = pairCount * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
+        std::size_t b = blockEdge[c - 1];
+        while (b < blocks && list.firstStart[std::min(b * B, n)] < target)
+            ++b;
+        blockEdge[c] = b;
+    }
+
+    const PairSink sink(world);
+    ChunkHealth health[kMaxChunks];
     parallelChunks(
-        pairCount, chunks,
-        [&](int chunk, std::size_t begin, std::size_t end)
+        static_cast<std::size_t>(chunks), chunks,
+        [&](int chunk, std::size_t, std::size_t)
         {
-            WorstOverlap local{0, 0, false};
-            if (allBatchable)
+            const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
+                              endParticle = std::min(blockEdge[chunk + 1] * B, n);
+            std::fill(sink.force + firstParticle, sink.force + endParticle, Vec3{});
+            std::fill(sink.torque + firstParticle, sink.torque + endParticle, Vec3{});
+            const std::size_t begin = list.firstStart[firstParticle], end = list.firstStart[endParticle];
+            WorstOverlap worst{0, 0, false};
+            std::size_t touchingCount = 0;
+            // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
+            const std::uint32_t* const first = list.first.data();
+            const std::uint32_t* const second = list.second.data();
+            const Vec3* const position = p.position.data();
+            const Real* const radius = p.radius.data();
+            if (!allBatchable)
             {
-                // One pass: each touching slot is appended (branch-free) to a batch of lanes with
-                // its separation and radii, and the batch runs when full.
-                PairBatch batch;
-                std::size_t m = 0;
-                // Array bases in locals: the byte-sized mayBeActive store below could otherwise
-                // alias the vectors' own pointers, which the compiler would reload every slot.
-                const std::uint32_t* const first = list.first.data();
-                const std::uint32_t* const second = list.second.data();
-                const Vec3* const position = p.position.data();
-                const Real* const radius = p.radius.data();
-                std::uint8_t* const mayBeActive = list.mayBeActive.data();
                 for (std::size_t k = begin; k < end; ++k)
                 {
                     const std::uint32_t i = first[k], j = second[k];
-                    const Vec3 &xi = position[i], &xj = position[j];
-                    const Real ri = radius[i], rj = radius[j];
-                    const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-                    const Real touching = ri + rj;
-                    const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
-                    batch.slot[m] = static_cast<std::uint32_t>(k);
-                    batch.i[m] = i;
-                    batch.j[m] = j;
-                    batch.sx[m] = sx;
-                    batch.sy[m] = sy;
-                    batch.sz[m] = sz;
-                    batch.ri[m] = ri;
-                    batch.rj[m] = rj;
-                    m += isTouching;
-                    if (!isTouching && mayBeActive[k])
+                    const Real touching = radius[i] + radius[j];
+                    if (lengthSquared(position[i] - position[j]) < touching * touching)
                     {
-                        // The contact opened (or never closed): forget it, contribute nothing.
-                        list.setHistory(k, ContactHistory{});
-                        list.force[k] = Vec3{};
-                        list.tangentialTorque[k] = Vec3{};
-                        if (list.keepRollingTorque)
-                            list.rollingTorque[k] = Vec3{};
-                        mayBeActive[k] = 0;
+                        pairContactScalar(world, list, sink, dt, k, worst);
+                        ++touchingCount;
                     }
-                    if (m == kBatch)
-                    {
-                        pairContactsBatch(world, list, dt, m, local, batch, uniform);
-                        m = 0;
-                    }
+                    else if (sink.mayBeActive[k])
+                        sink.open(list, k);
                 }
-                if (m > 0)
-                    pairContactsBatch(world, list, dt, m, local, batch, uniform);
-                worst[chunk] = local;
+                health[chunk] = {worst, touchingCount};
                 return;
             }
-            // Pass 1: which slots touch (branch-free), and clear the slots that just opened.
-            std::uint32_t* touchingSlots = list.touchingScratch.data() + begin;
-            std::size_t touchingCount = 0;
+            // One pass: each touching slot is appended (branch-free) to a batch of lanes with its
+            // separation and radii, and the batch runs when full.
+            PairBatch batch;
+            std::size_t m = 0;
             for (std::size_t k = begin; k < end; ++k)
             {
-                const std::uint32_t i = list.first[k], j = list.second[k];
-                const Real touching = p.radius[i] + p.radius[j];
-                const bool isTouching = lengthSquared(p.position[i] - p.position[j]) < touching * touching;
-                touchingSlots[touchingCount] = static_cast<std::uint32_t>(k);
-                touchingCount += isTouching;
-                if (!isTouching && list.mayBeActive[k])
+                const std::uint32_t i = first[k], j = second[k];
+                const Vec3 &xi = position[i], &xj = position[j];
+                const Real ri = radius[i], rj = radius[j];
+                const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
+                const Real touching = ri + rj;
+                const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
+                batch.slot[m] = static_cast<std::uint32_t>(k);
+                batch.i[m] = i;
+                batch.j[m] = j;
+                batch.sx[m] = sx;
+                batch.sy[m] = sy;
+                batch.sz[m] = sz;
+                batch.ri[m] = ri;
+                batch.rj[m] = rj;
+                m += isTouching;
+                // One well-predicted branch: a slot opens rarely (`&&` would branch on isTouching,
+                // which is close to random).
+                if (__builtin_expect(sink.mayBeActive[k] & static_cast<std::uint8_t>(!isTouching), 0))
+                    sink.open(list, k);
+                if (m == kBatch)
                 {
-                    // The contact opened (or never closed): forget it, contribute nothing.
-                    list.setHistory(k, ContactHistory{});
-                    list.force[k] = Vec3{};
-                    list.tangentialTorque[k] = Vec3{};
-                    if (list.keepRollingTorque)
-                        list.rollingTorque[k] = Vec3{};
-                    list.mayBeActive[k] = 0;
+                    pairContactsBatch(world, sink, dt, m, worst, batch, uniform);
+                    touchingCount += m;
+                    m = 0;
                 }
             }
-            // Pass 2: the contact law on the touching slots, in ascending slot order.
-            auto scalarContact = [&](std::size_t k)
-            {
-                const std::uint32_t i = list.first[k], j = list.second[k];
-                list.mayBeActive[k] = 1;
-                const Vec3 separation = p.position[i] - p.position[j];
-                const Real ri = p.radius[i], rj = p.radius[j];
-                const Real touching = ri + rj;
-                const Real distance2 = lengthSquared(separation);
-                const PairParams& params = world.pairs(p.material[i], p.material[j]);
-                const ExtraInputs extra = extraInputsFor(params);
-                const Real distance = std::sqrt(distance2);
-                ContactInput in;
-                in.normal = distance > 0 ? separation / distance : Vec3{0, 0, 1};
-                in.overlap = touching - distance;
-                const Real leverI = ri * distance / touching, leverJ = rj * distance / touching;
-                in.relativeVelocity =
-                    p.velocity[i] - p.velocity[j] -
-                    cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
-                in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
-                in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-                if (extra.effectiveRadius)
-                    in.effectiveRadius = ri * rj / touching;
-                if (extra.spinInertia)
-                    in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-                if (extra.rollingInertia)
-                    in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
-                                               1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
-
-                ContactHistory history = list.history(k);
-                const ContactOutput out = evaluateContact(params, in, history, dt);
-                list.setHistory(k, history);
-
-                const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
-                list.force[k] = out.force;
-                list.tangentialTorque[k] = tangentialTorque;
-                list.leverFirst[k] = leverI;
-                list.leverSecond[k] = leverJ;
-                if (list.keepRollingTorque)
-                    list.rollingTorque[k] = out.rollingTorque;
-
-                const Real ratio = in.overlap / std::min(ri, rj);
-                if (ratio > local.ratio)
-                    local = {ratio, i, true};
-            };
-            for (std::size_t t = 0; t < touchingCount; ++t)
-                scalarContact(touchingSlots[t]);
-            worst[chunk] = local;
+            if (m > 0)
+                pairContactsBatch(world, sink, dt, m, worst, batch, uniform);
+            touchingCount += m;
+            health[chunk] = {worst, touchingCount};
         });
+    WorstOverlap worst[kMaxChunks];
+    for (int c = 0; c < chunks; ++c)
+    {
+        worst[c] = health[c].worst;
+        world.health.touchingPairs += health[c].touching;
+    }
     combine(world.health, worst, chunks);
 }
 
 namespace
 {
 
-/// Wall slots [begin, end): the scalar contact law, outputs into the slots.
-WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt, std::size_t begin,
-                              std::size_t end)
+/// Wall slots of particles [firstParticle, endParticle): the scalar contact law, each touching
+/// contact added straight into its particle's sums (a particle's slots are contiguous, in slot
+/// order).
+ChunkHealth wallContactRange(World& world, Real dt, std::size_t firstParticle, std::size_t endParticle)
 {
-    const ParticleStore& p = world.particles;
+    ParticleStore& p = world.particles;
+    WallContactList& list = world.wallContacts;
     WorstOverlap worst{0, 0, false};
-    for (std::size_t k = begin; k < end; ++k)
+    std::size_t touchingCount = 0;
+    for (std::size_t k = list.start[firstParticle]; k < list.start[endParticle]; ++k)
     {
         const std::uint32_t i = list.particle[k];
         const Wall& wall = world.walls[list.wall[k]];
@@ -475,10 +567,9 @@ WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt
         if (!gap.touching)
         {
             list.setHistory(k, ContactHistory{});
-            list.force[k] = Vec3{};
-            list.torque[k] = Vec3{};
             continue;
         }
+        ++touchingCount;
         const PairParams& params = world.pairs(p.material[i], wall.material);
         ContactInput in;
         in.normal = gap.normal;
@@ -501,79 +592,73 @@ WorstOverlap wallContactRange(const World& world, WallContactList& list, Real dt
         ContactHistory history = list.history(k);
         const ContactOutput out = evaluateContact(params, in, history, dt);
         list.setHistory(k, history);
-        list.force[k] = out.force;
-        list.torque[k] = out.rollingTorque + cross(arm, out.tangentialForce);
+        p.force[i] += out.force;
+        p.torque[i] += out.rollingTorque + cross(arm, out.tangentialForce);
 
         const Real ratio = in.overlap / r;
         if (ratio > worst.ratio)
             worst = {ratio, i, true};
     }
-    return worst;
+    return {worst, touchingCount};
 }
 
 } // namespace
 
-void computeWallForces(World& world, Real dt)
-{
-    WallContactList& list = world.wallContacts;
-    const std::size_t count = list.size();
-    if (count == 0)
-        return;
-    const int chunks = std::min(loopThreads(count), kMaxChunks);
-    if (chunks == 1)
-    {
-        const WorstOverlap worst = wallContactRange(world, list, dt, 0, count);
-        combine(world.health, &worst, 1);
-        return;
-    }
-    WorstOverlap worst[kMaxChunks];
-    parallelChunks(count, chunks,
-                   [&](int chunk, std::size_t begin, std::size_t end)
-                   { worst[chunk] = wallContactRange(world, list, dt, begin, end); });
-    combine(world.health, worst, chunks);
-}
-
-void gatherContactForces(World& world)
+void addCrossBlockForces(World& world)
 {
     ParticleStore& p = world.particles;
     const NeighborList& pairs = world.neighbors;
-    const WallContactList& walls = world.wallContacts;
-    const bool hasWalls = walls.start.size() == p.size() + 1;
+    if (pairs.incoming.empty() || pairs.incomingStart.size() != p.size() + 1)
+        return;
+    const std::uint32_t* const start = pairs.incomingStart.data();
+    const std::uint32_t* const incoming = pairs.incoming.data();
+    const Vec3* const deferredForce = pairs.deferredForce.data();
+    const Vec3* const deferredTorque = pairs.deferredTorque.data();
     parallelFor(p.size(),
                 [&](std::size_t i)
                 {
-                    Vec3 force{}, torque{};
-                    // Slots where i is the second particle come first in slot order (their first
-                    // particle is < i), then i's own slots.
-                    for (std::uint32_t s = pairs.secondStart[i]; s < pairs.secondStart[i + 1]; ++s)
+                    if (start[i] == start[i + 1])
+                        return;
+                    Vec3 force = p.force[i], torque = p.torque[i];
+                    for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
                     {
-                        const std::uint32_t k = pairs.secondSlots[s];
-                        force -= pairs.force[k];
-                        const Vec3 rolling = pairs.keepRollingTorque ? pairs.rollingTorque[k] : Vec3{};
-                        torque += -rolling - pairs.leverSecond[k] * pairs.tangentialTorque[k];
+                        force += deferredForce[incoming[e]];
+                        torque += deferredTorque[incoming[e]];
                     }
-                    for (std::uint32_t k = pairs.firstStart[i]; k < pairs.firstStart[i + 1]; ++k)
-                    {
-                        force += pairs.force[k];
-                        const Vec3 rolling = pairs.keepRollingTorque ? pairs.rollingTorque[k] : Vec3{};
-                        torque += rolling - pairs.leverFirst[k] * pairs.tangentialTorque[k];
-                    }
-                    if (hasWalls)
-                        for (std::uint32_t k = walls.start[i]; k < walls.start[i + 1]; ++k)
-                        {
-                            force += walls.force[k];
-                            torque += walls.torque[k];
-                        }
                     p.force[i] = force;
                     p.torque[i] = torque;
                 });
 }
 
+void computeWallForces(World& world, Real dt)
+{
+    WallContactList& list = world.wallContacts;
+    const std::size_t n = world.particles.size();
+    world.health.touchingWalls = 0;
+    if (list.size() == 0 || list.start.size() != n + 1)
+        return;
+    const int chunks = std::min(loopThreads(list.size()), kMaxChunks);
+    ChunkHealth health[kMaxChunks];
+    if (chunks == 1)
+        health[0] = wallContactRange(world, dt, 0, n);
+    else
+        parallelChunks(n, chunks,
+                       [&](int chunk, std::size_t begin, std::size_t end)
+                       { health[chunk] = wallContactRange(world, dt, begin, end); });
+    WorstOverlap worst[kMaxChunks];
+    for (int c = 0; c < chunks; ++c)
+    {
+        worst[c] = health[c].worst;
+        world.health.touchingWalls += health[c].touching;
+    }
+    combine(world.health, worst, chunks);
+}
+
 void computeForces(World& world, Real dt)
 {
     computePairForces(world, dt);
+    addCrossBlockForces(world);
     computeWallForces(world, dt);
-    gatherContactForces(world);
 }
 
 } // namespace veridem::dem

@@ -37,10 +37,10 @@ bool NeighborList::needsRebuild(const ParticleStore& particles) const
 std::size_t NeighborList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
-           bytes(tangentialTorque) + bytes(leverFirst) + bytes(leverSecond) + bytes(rollingTorque) +
-           bytes(firstStart) + bytes(secondStart) + bytes(secondSlots) + bytes(effectiveMass) +
-           bytes(mayBeActive) + bytes(touchingScratch) + bytes(positionAtBuild_);
+    return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) +
+           bytes(effectiveMass) + bytes(mayBeActive) + bytes(firstStart) + bytes(deferredIndex) +
+           bytes(deferredForce) + bytes(deferredTorque) + bytes(incomingStart) + bytes(incoming) +
+           bytes(positionAtBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -49,22 +49,19 @@ void NeighborList::rebuild(const ParticleStore& particles)
     const std::size_t n = particles.size();
     positionAtBuild_.assign(particles.position.begin(), particles.position.end());
     firstStart.assign(n + 1, 0);
-    secondStart.assign(n + 1, 0);
+    incomingStart.assign(n + 1, 0);
     if (n == 0)
     {
         first.clear();
         second.clear();
         tangentialSpring.clear();
         rollingSpring.clear();
-        force.clear();
-        tangentialTorque.clear();
-        leverFirst.clear();
-        leverSecond.clear();
-        rollingTorque.clear();
-        secondSlots.clear();
         mayBeActive.clear();
-        touchingScratch.clear();
         effectiveMass.clear();
+        deferredIndex.clear();
+        deferredForce.clear();
+        deferredTorque.clear();
+        incoming.clear();
         return;
     }
 
@@ -186,11 +183,6 @@ void NeighborList::rebuild(const ParticleStore& particles)
         rollingSpring.swap(newRolling);
     else
         rollingSpring.clear();
-    force.assign(pairCount, Vec3{});
-    tangentialTorque.assign(pairCount, Vec3{});
-    leverFirst.assign(pairCount, 0.0);
-    leverSecond.assign(pairCount, 0.0);
-    rollingTorque.assign(keepRollingTorque ? pairCount : 0, Vec3{});
     mayBeActive.assign(pairCount, 1);
     effectiveMass.resize(pairCount);
     for (std::size_t k = 0; k < pairCount; ++k)
@@ -198,17 +190,30 @@ void NeighborList::rebuild(const ParticleStore& particles)
         const Real mi = particles.mass[first[k]], mj = particles.mass[second[k]];
         effectiveMass[k] = mi * mj / (mi + mj);
     }
-    touchingScratch.clear(); // sized by the scalar force path when it runs
 
-    // Gather adjacency: for each particle, the slots where it is second, ascending.
+    // Cross-block slots (the second particle in a later block), numbered in slot order, and for
+    // each particle its incoming entries, ascending.
+    deferredIndex.resize(pairCount);
+    std::uint32_t deferredCount = 0;
     for (std::size_t k = 0; k < pairCount; ++k)
-        ++secondStart[second[k] + 1];
+    {
+        const bool cross = first[k] / kBlockParticles != second[k] / kBlockParticles;
+        deferredIndex[k] = cross ? deferredCount : kInBlock;
+        if (cross)
+        {
+            ++deferredCount;
+            ++incomingStart[second[k] + 1];
+        }
+    }
     for (std::size_t i = 0; i < n; ++i)
-        secondStart[i + 1] += secondStart[i];
-    secondSlots.resize(pairCount);
-    fill_.assign(secondStart.begin(), secondStart.end() - 1);
+        incomingStart[i + 1] += incomingStart[i];
+    deferredForce.assign(deferredCount, Vec3{});
+    deferredTorque.assign(deferredCount, Vec3{});
+    incoming.resize(deferredCount);
+    std::vector<std::uint32_t> fill(incomingStart.begin(), incomingStart.end() - 1);
     for (std::size_t k = 0; k < pairCount; ++k)
-        secondSlots[fill_[second[k]]++] = static_cast<std::uint32_t>(k);
+        if (deferredIndex[k] != kInBlock)
+            incoming[fill[second[k]]++] = deferredIndex[k];
 }
 
 } // namespace veridem::dem

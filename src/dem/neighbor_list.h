@@ -10,12 +10,16 @@
 // FixNeighHistory). History is also zeroed the moment a contact opens (in the force loop), so a
 // re-formed contact starts fresh.
 //
-// Per-step outputs (STYLE 3.4). The force loop writes each slot's force and the torques on its two
-// particles into the slot's own entries (no races, any thread count); the gather then sums, for
-// each particle, the slots where it is the second particle (`secondSlots`, ascending slot order)
-// and then its own slots as first particle (contiguous, `firstStart`). Since the list is sorted by
-// (i, j), that is exactly ascending slot order: the same order, and so the same bits, as a serial
-// scatter loop over the slots, for any number of threads.
+// Force sums (STYLE 3.4). Particles are grouped in fixed blocks of `kBlockParticles` consecutive
+// indices, a partition that does not depend on the thread count. The force loop runs over whole
+// blocks (each thread a contiguous range of them) and adds each contact's force and torques
+// straight into both particles when both lie in the slot's block; a slot whose second particle lies
+// in a later block ("cross-block") adds into its first particle only and leaves the second
+// particle's share in the slot's `deferred` entry, which a per-particle pass adds afterwards in
+// ascending slot order (`incomingStart`/`incoming`). So every particle's sum has one fixed order:
+// its in-block contacts in slot order, then its incoming cross-block contacts in slot order (then
+// its walls): the same bits for any number of threads, with no per-slot outputs for the ~85 % of
+// slots that stay inside a block.
 #pragma once
 
 #include "core/vec3.h"
@@ -40,31 +44,28 @@ class NeighborList
     std::vector<Vec3> rollingSpring;    // history per pair slot [N m] (empty unless keepRollingHistory)
 
     // Per-slot effective mass m* = m_i m_j / (m_i + m_j) [kg], set on a rebuild (the contact law's
-    // expression, so the same bits), for the four-lane path.
+    // expression, so the same bits), for the lane path.
     std::vector<Real> effectiveMass;
 
-    // Per-step outputs, one entry per slot (zero for slots not in contact).
-    std::vector<Vec3> force; // on the first particle [N] (the second gets -force)
-    // The torques are assembled by the gather: on the first particle  rolling - leverFirst (n x Ft),
-    // on the second  -rolling - leverSecond (n x Ft)  (lever arms l_i, l_j: forces.cpp). Storing
-    // the three parts costs 40 bytes per slot instead of 48 for two torques.
-    std::vector<Vec3> tangentialTorque; // n x Ft [N m]
-    std::vector<Real> leverFirst;       // l_i [m]
-    std::vector<Real> leverSecond;      // l_j [m]
-    std::vector<Vec3> rollingTorque;    // on the first particle [N m] (empty unless keepRollingTorque)
-    bool keepRollingTorque = false;     // some pair has a rolling-resistance model
-
-    // Force-loop bookkeeping: whether the slot's outputs/history may be non-zero (cleared when the
-    // slot is found open, so an open slot is written once, not every step), and room for each
-    // chunk's list of touching slots.
+    // Whether the slot's history may be non-zero (cleared when the slot is found open, so an open
+    // slot is written once, not every step).
     std::vector<std::uint8_t> mayBeActive;
-    std::vector<std::uint32_t> touchingScratch;
 
-    // Gather adjacency (CSR), rebuilt with the list.
+    // Blocks: particles [b * kBlockParticles, (b + 1) * kBlockParticles) form block b.
+    static constexpr std::uint32_t kBlockParticles = 1024;
     std::vector<std::uint32_t> firstStart; // slots [firstStart[p], firstStart[p+1]) have first == p
-    std::vector<std::uint32_t>
-        secondStart; // secondSlots[secondStart[p] .. secondStart[p+1]) have second == p
-    std::vector<std::uint32_t> secondSlots; // ascending within each particle
+
+    // Cross-block slots. deferredIndex[k] is the slot's entry in deferredForce/deferredTorque, or
+    // kInBlock. Entries are numbered in slot order and hold, after the force loop, the force [N]
+    // and torque [N m] on the slot's second particle (zero while the slot is open).
+    static constexpr std::uint32_t kInBlock = 0xffffffffu;
+    std::vector<std::uint32_t> deferredIndex;
+    std::vector<Vec3> deferredForce;
+    std::vector<Vec3> deferredTorque;
+    // incoming[incomingStart[p] .. incomingStart[p+1]): the deferred entries whose second particle
+    // is p, ascending (= ascending slot order).
+    std::vector<std::uint32_t> incomingStart;
+    std::vector<std::uint32_t> incoming;
 
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;

@@ -74,8 +74,6 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     wall.swap(newWall);
     tangentialSpring.swap(newTangential);
     rollingSpring.swap(newRolling);
-    force.assign(count, Vec3{});
-    torque.assign(count, Vec3{});
     start.assign(n + 1, 0);
     for (std::size_t k = 0; k < count; ++k)
         ++start[particle[k] + 1];
@@ -95,8 +93,8 @@ Vec3& WallContactList::tangentialSpringOf(std::uint32_t particleIndex, std::uint
 std::size_t WallContactList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(particle) + bytes(wall) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(force) +
-           bytes(torque) + bytes(start) + bytes(wallDisplacementAtBuild_);
+    return bytes(particle) + bytes(wall) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(start) +
+           bytes(wallDisplacementAtBuild_);
 }
 
 } // namespace veridem::dem

@@ -30,8 +30,6 @@ class WallContactList
     std::vector<std::uint32_t> wall;
     std::vector<Vec3> tangentialSpring; // history per slot [m]
     std::vector<Vec3> rollingSpring;    // [N m] (empty unless keepRollingHistory)
-    std::vector<Vec3> force;            // per-step output: force on the particle [N]
-    std::vector<Vec3> torque;           // per-step output: torque on the particle [N m]
     std::vector<std::uint32_t> start;   // slots [start[p], start[p+1]) belong to particle p
 
     /// True if some wall translated more than skin/2 since the last build (or never built).

@@ -4,10 +4,12 @@
 //   walls          prescribed motion to t + dt
 //   neighbours     rebuild the Verlet and wall-contact lists if some particle moved more than
 //                  skin/2 (or a wall translated more than skin/2)
-//   contacts       per-contact forces at x(t+dt) from the half-step velocities, each written to
-//                  its own slot (pairs, then walls; parallel)
-//   gather         per-particle sums of the slots in a fixed order (parallel; the same bits for
-//                  any number of threads, STYLE 3.4)
+//   pairs          pair contact forces at x(t+dt) from the half-step velocities, summed into
+//                  the particles block by block (parallel over fixed blocks of particles)
+//   cross-block    each particle adds its contacts with earlier blocks, in slot order
+//   walls          particle-wall contacts, added per particle in slot order
+//                  (every sum has a fixed order: the same bits for any number of threads,
+//                  STYLE 3.4; neighbor_list.h)
 //   kick           v(t+dt) = v(t+dt/2) + dt/2 a(t+dt);  w likewise
 //
 // The dashpots and the tangential-spring increment use the half-step velocities: the spring
@@ -103,11 +105,6 @@ void prepare(World& world)
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
             rollingHistory = rollingHistory || world.pairs(a, b).rollingModel == RollingModel::Epsd;
     world.neighbors.keepRollingHistory = rollingHistory;
-    bool rollingTorque = false;
-    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
-        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
-            rollingTorque = rollingTorque || world.pairs(a, b).rollingModel != RollingModel::None;
-    world.neighbors.keepRollingTorque = rollingTorque;
     world.wallContacts.keepRollingHistory = rollingHistory;
     rebuildContactLists(world);
     world.prepared = true;
@@ -127,12 +124,12 @@ void step(World& world, Real dt)
     if (contactListsNeedRebuild(world)) // Verlet + wall lists, history merge
         rebuildContactLists(world);
     clock.lap(&StepProfile::neighbours);
-    computePairForces(world, dt); // 3. per-contact forces at t+dt
+    computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
     clock.lap(&StepProfile::pairForces);
-    computeWallForces(world, dt);
-    clock.lap(&StepProfile::wallForces);
-    gatherContactForces(world); // 4. per-particle sums, fixed order
+    addCrossBlockForces(world); // 4. contacts across blocks, fixed order
     clock.lap(&StepProfile::gather);
+    computeWallForces(world, dt); // 5. wall contacts
+    clock.lap(&StepProfile::wallForces);
     kick(world.particles, world.gravity, dt, world.health); // v(t+dt)
     clock.lap(&StepProfile::integration);
 

@@ -20,6 +20,8 @@ struct StepHealth
 {
     Real maxOverlapRatio = 0;         // max over contacts of overlap / smaller radius [-]
     std::uint32_t worstParticle = 0;  // particle with that overlap
+    std::size_t touchingPairs = 0;    // particle pairs in contact
+    std::size_t touchingWalls = 0;    // particle-wall contacts
     bool finite = true;               // all positions and velocities finite
     std::uint32_t firstNonFinite = 0; // first particle that is not
 };
@@ -31,9 +33,9 @@ struct StepProfile
     bool enabled = false;
     double integration = 0; // kick-drift, wall motion, kick
     double neighbours = 0;  // rebuild test + Verlet list rebuild + history merge
-    double pairForces = 0;  // per-contact pair forces (stage 3)
-    double wallForces = 0;  // per-contact wall forces (stage 3)
-    double gather = 0;      // per-particle sums in a fixed order (stage 4)
+    double pairForces = 0;  // pair contacts, summed within blocks (stage 3)
+    double gather = 0;      // cross-block sums (stage 4)
+    double wallForces = 0;  // wall contacts (stage 5)
 };
 
 struct World
