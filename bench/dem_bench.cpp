@@ -260,6 +260,10 @@ int main(int argc, char** argv)
                     world.neighbors.size(),
                     static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
+        std::printf("  touching candidates %zu (%.2f per particle, inner skin %.3g m), rebuilt %zu times\n",
+                    world.neighbors.activeSlots.size(),
+                    static_cast<double>(world.neighbors.activeSlots.size()) / static_cast<double>(n),
+                    world.neighbors.innerSkin, world.neighbors.activeRebuildCount());
         const auto touching = static_cast<std::ptrdiff_t>(world.health.touchingPairs);
         const auto wallTouching = static_cast<std::ptrdiff_t>(world.health.touchingWalls);
         std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n",

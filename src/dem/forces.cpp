@@ -441,6 +441,12 @@ void computePairForces(World& world, Real dt)
     if (n == 0)
         return;
     const std::size_t pairCount = list.size();
+    if (pairCount == 0) // e.g. one ball on a turntable: nothing but the reset
+    {
+        std::fill(p.force.begin(), p.force.end(), Vec3{});
+        std::fill(p.torque.begin(), p.torque.end(), Vec3{});
+        return;
+    }
     bool allBatchable = world.batchedContactKernel;
     for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
@@ -464,6 +470,15 @@ void computePairForces(World& world, Real dt)
         blockEdge[c] = b;
     }
 
+    list.refreshActiveSlots(p); // the touching candidates, if the sub-list is stale
+    const std::uint32_t* const active = list.activeSlots.data();
+    const std::size_t activeCount = list.activeSlots.size();
+    const auto activeFrom = [&](std::size_t particle) // first candidate slot of this particle on
+    {
+        return static_cast<std::size_t>(
+            std::lower_bound(active, active + activeCount, list.firstStart[particle]) - active);
+    };
+
     const PairSink sink(world);
     ChunkHealth health[kMaxChunks];
     parallelChunks(
@@ -474,7 +489,8 @@ void computePairForces(World& world, Real dt)
                               endParticle = std::min(blockEdge[chunk + 1] * B, n);
             std::fill(sink.force + firstParticle, sink.force + endParticle, Vec3{});
             std::fill(sink.torque + firstParticle, sink.torque + endParticle, Vec3{});
-            const std::size_t begin = list.firstStart[firstParticle], end = list.firstStart[endParticle];
+            const std::size_t begin = activeFrom(firstParticle),
+                              end = endParticle == n ? activeCount : activeFrom(endParticle);
             WorstOverlap worst{0, 0, false};
             std::size_t touchingCount = 0;
             // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
@@ -484,9 +500,9 @@ void computePairForces(World& world, Real dt)
             const Real* const radius = p.radius.data();
             if (!allBatchable)
             {
-                for (std::size_t k = begin; k < end; ++k)
+                for (std::size_t a = begin; a < end; ++a)
                 {
-                    const std::uint32_t i = first[k], j = second[k];
+                    const std::uint32_t k = active[a], i = first[k], j = second[k];
                     const Real touching = radius[i] + radius[j];
                     if (lengthSquared(position[i] - position[j]) < touching * touching)
                     {
@@ -503,15 +519,15 @@ void computePairForces(World& world, Real dt)
             // separation and radii, and the batch runs when full.
             PairBatch batch;
             std::size_t m = 0;
-            for (std::size_t k = begin; k < end; ++k)
+            for (std::size_t a = begin; a < end; ++a)
             {
-                const std::uint32_t i = first[k], j = second[k];
+                const std::uint32_t k = active[a], i = first[k], j = second[k];
                 const Vec3 &xi = position[i], &xj = position[j];
                 const Real ri = radius[i], rj = radius[j];
                 const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
                 const Real touching = ri + rj;
                 const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
-                batch.slot[m] = static_cast<std::uint32_t>(k);
+                batch.slot[m] = k;
                 batch.i[m] = i;
                 batch.j[m] = j;
                 batch.sx[m] = sx;
@@ -638,13 +654,17 @@ void computeWallForces(World& world, Real dt)
     if (list.size() == 0 || list.start.size() != n + 1)
         return;
     const int chunks = std::min(loopThreads(list.size()), kMaxChunks);
-    ChunkHealth health[kMaxChunks];
     if (chunks == 1)
-        health[0] = wallContactRange(world, dt, 0, n);
-    else
-        parallelChunks(n, chunks,
-                       [&](int chunk, std::size_t begin, std::size_t end)
-                       { health[chunk] = wallContactRange(world, dt, begin, end); });
+    {
+        const ChunkHealth health = wallContactRange(world, dt, 0, n);
+        world.health.touchingWalls = health.touching;
+        combine(world.health, &health.worst, 1);
+        return;
+    }
+    ChunkHealth health[kMaxChunks];
+    parallelChunks(n, chunks,
+                   [&](int chunk, std::size_t begin, std::size_t end)
+                   { health[chunk] = wallContactRange(world, dt, begin, end); });
     WorstOverlap worst[kMaxChunks];
     for (int c = 0; c < chunks; ++c)
     {

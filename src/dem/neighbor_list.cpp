@@ -8,30 +8,85 @@
 namespace veridem::dem
 {
 
+std::pair<Real, Real> NeighborList::largestMotion2(const ParticleStore& particles) const
+{
+    const std::size_t n = particles.size();
+    const bool active = positionAtActiveBuild_.size() == n;
+    const Vec3* const x = particles.position.data();
+    const Vec3* const built = positionAtBuild_.data();
+    const Vec3* const activeBuilt = active ? positionAtActiveBuild_.data() : built;
+    const int chunks = std::min(loopThreads(n), 64);
+    Real full[64], sub[64];
+    parallelChunks(n, chunks,
+                   [&](int c, std::size_t begin, std::size_t end)
+                   {
+                       Real a = 0, b = 0;
+                       for (std::size_t i = begin; i < end; ++i)
+                       {
+                           a = std::max(a, lengthSquared(x[i] - built[i]));
+                           b = std::max(b, lengthSquared(x[i] - activeBuilt[i]));
+                       }
+                       full[c] = a;
+                       sub[c] = b;
+                   });
+    return {*std::max_element(full, full + chunks), *std::max_element(sub, sub + chunks)};
+}
+
 bool NeighborList::needsRebuild(const ParticleStore& particles) const
 {
     if (positionAtBuild_.size() != particles.size())
         return true;
-    const Real limit2 = 0.25 * skin * skin;
-    const std::size_t n = particles.size();
-    const int chunks = std::min(loopThreads(n), 64);
-    if (chunks == 1)
+    return largestMotion2(particles).first > 0.25 * skin * skin;
+}
+
+bool NeighborList::checkMotion(const ParticleStore& particles)
+{
+    if (positionAtBuild_.size() != particles.size())
+        return true;
+    const auto [full, sub] = largestMotion2(particles);
+    if (sub > 0.25 * innerSkin * innerSkin)
+        activeStale_ = true;
+    return full > 0.25 * skin * skin;
+}
+
+void NeighborList::refreshActiveSlots(const ParticleStore& particles)
+{
+    ++activeAge_;
+    const bool mayShrink = activeAge_ > 256 && innerSkin > skin / 16; // long-lived: try a tighter one
+    if (!activeStale_ && !mayShrink)
+        return;
+    // Adapt the inner skin to the lifetime of the sub-list just ended.
+    if (innerSkin <= 0 || innerSkin > skin)
+        innerSkin = skin;
+    else if (activeAge_ < 8)
+        innerSkin = std::min(2 * innerSkin, skin);
+    else if (activeAge_ > 256)
+        innerSkin = std::max(0.5 * innerSkin, skin / 16);
+    activeAge_ = 0;
+    activeStale_ = false;
+    ++activeRebuilds_;
+    positionAtActiveBuild_.assign(particles.position.begin(), particles.position.end());
+    activeSlots.clear();
+    const Vec3* const x = particles.position.data();
+    const Real* const r = particles.radius.data();
+    for (std::size_t k = 0; k < first.size(); ++k)
     {
-        for (std::size_t i = 0; i < n; ++i)
-            if (lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2)
-                return true;
-        return false;
+        const std::uint32_t i = first[k], j = second[k];
+        const Real reach = r[i] + r[j] + innerSkin;
+        if (lengthSquared(x[i] - x[j]) < reach * reach)
+            activeSlots.push_back(static_cast<std::uint32_t>(k));
+        else if (mayBeActive[k])
+        {
+            // Left out, so not touching: the contact opened (or never closed).
+            setHistory(k, ContactHistory{});
+            if (deferredIndex[k] != kInBlock)
+            {
+                deferredForce[deferredIndex[k]] = Vec3{};
+                deferredTorque[deferredIndex[k]] = Vec3{};
+            }
+            mayBeActive[k] = 0;
+        }
     }
-    bool moved[64];
-    parallelChunks(n, chunks,
-                   [&](int c, std::size_t begin, std::size_t end)
-                   {
-                       bool any = false;
-                       for (std::size_t i = begin; i < end; ++i)
-                           any |= lengthSquared(particles.position[i] - positionAtBuild_[i]) > limit2;
-                       moved[c] = any;
-                   });
-    return std::any_of(moved, moved + chunks, [](bool b) { return b; });
 }
 
 std::size_t NeighborList::memoryBytes() const
@@ -46,6 +101,7 @@ std::size_t NeighborList::memoryBytes() const
 void NeighborList::rebuild(const ParticleStore& particles)
 {
     ++rebuilds_;
+    activeStale_ = true; // new slots: the sub-list is rebuilt by the next force evaluation
     const std::size_t n = particles.size();
     positionAtBuild_.assign(particles.position.begin(), particles.position.end());
     firstStart.assign(n + 1, 0);

@@ -27,6 +27,7 @@
 #include "dem/particles.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace veridem::dem
@@ -67,8 +68,25 @@ class NeighborList
     std::vector<std::uint32_t> incomingStart;
     std::vector<std::uint32_t> incoming;
 
+    // Touching candidates (STYLE: a two-level Verlet list). `activeSlots` holds, in ascending
+    // order, the slots whose gap was below `innerSkin` when it was built; it is rebuilt from the
+    // slots when some particle has moved more than innerSkin/2 since, so a slot left out cannot be
+    // touching and the force loop visits only these. A settled bed has ~2.4 candidates per particle
+    // instead of ~4.9 slots. innerSkin adapts: doubled (up to skin) when the sub-list lived fewer
+    // than 8 steps, halved (down to skin/16) when it lived more than 256. The result is the same
+    // bits as visiting every slot, since open slots contribute nothing.
+    Real innerSkin = 0; // [m]
+    std::vector<std::uint32_t> activeSlots;
+
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;
+    /// needsRebuild(), and in the same pass marks the candidate sub-list stale if some particle
+    /// moved more than innerSkin/2 since it was built. Called once per step.
+    bool checkMotion(const ParticleStore& particles);
+    /// Rebuilds activeSlots if stale, at the current positions, clearing the history of slots left
+    /// out that were in contact (they just opened). `deferredForce`/`deferredTorque` of such
+    /// slots are zeroed as well.
+    void refreshActiveSlots(const ParticleStore& particles);
     /// Rebuilds the pair list, carrying history over by (i, j).
     void rebuild(const ParticleStore& particles);
 
@@ -86,11 +104,19 @@ class NeighborList
 
     std::size_t size() const { return first.size(); }
     std::size_t rebuildCount() const { return rebuilds_; }
+    std::size_t activeRebuildCount() const { return activeRebuilds_; }
     /// Bytes held by the list's arrays (capacity), for memory accounting.
     std::size_t memoryBytes() const;
 
   private:
+    /// Largest squared displacement since the last full build and since the sub-list was built.
+    std::pair<Real, Real> largestMotion2(const ParticleStore& particles) const;
+
     std::vector<Vec3> positionAtBuild_;
+    std::vector<Vec3> positionAtActiveBuild_;
+    bool activeStale_ = true;
+    std::uint64_t activeAge_ = 0; // steps since the sub-list was built
+    std::size_t activeRebuilds_ = 0;
     std::size_t rebuilds_ = 0;
 };
 

@@ -74,9 +74,9 @@ class StageClock
     std::chrono::steady_clock::time_point last_;
 };
 
-bool contactListsNeedRebuild(const World& world)
+bool contactListsNeedRebuild(World& world)
 {
-    return world.neighbors.needsRebuild(world.particles) ||
+    return world.neighbors.checkMotion(world.particles) ||
            world.wallContacts.needsRebuild(world.walls, world.neighbors.skin);
 }
 
