@@ -273,7 +273,7 @@ int main(int argc, char** argv)
         if (o.profile)
         {
             const StepProfile& p = world.profile;
-            const double total = p.integration + p.neighbours + p.pairForces + p.wallForces + p.gather;
+            const double total = p.integration + p.neighbours + p.pairForces + p.particlePass;
             auto share = [&](const char* name, double t)
             {
                 std::printf("    %-22s %8.3f s %5.1f %%  %6.1f ns/particle-step\n", name, t, 100 * t / total,
@@ -282,8 +282,7 @@ int main(int argc, char** argv)
             std::printf("  time by stage (timers on):\n");
             share("neighbour rebuild", p.neighbours);
             share("pair forces", p.pairForces);
-            share("cross-block sums", p.gather);
-            share("wall forces", p.wallForces);
+            share("cross-block, walls, kick", p.particlePass);
             share("integration", p.integration);
         }
         std::fflush(stdout);

@@ -101,7 +101,7 @@ void crossBlockSums(benchmark::State& state)
     World world = latticeWorld(static_cast<int>(state.range(0)));
     computePairForces(world, 1e-5);
     for (auto _ : state)
-        addCrossBlockForces(world);
+        addCrossBlockForces(world, 0, world.particles.size());
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles.size()));
 }
 BENCHMARK(crossBlockSums)->Arg(16)->Arg(28);

@@ -561,19 +561,39 @@ void computePairForces(World& world, Real dt)
     combine(world.health, worst, chunks);
 }
 
-namespace
+void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
 {
+    ParticleStore& p = world.particles;
+    const NeighborList& pairs = world.neighbors;
+    if (pairs.incoming.empty() || pairs.incomingStart.size() != p.size() + 1)
+        return;
+    const std::uint32_t* const start = pairs.incomingStart.data();
+    const std::uint32_t* const incoming = pairs.incoming.data();
+    const Vec3* const deferredForce = pairs.deferredForce.data();
+    const Vec3* const deferredTorque = pairs.deferredTorque.data();
+    for (std::size_t i = begin; i < end; ++i)
+    {
+        if (start[i] == start[i + 1])
+            continue;
+        Vec3 force = p.force[i], torque = p.torque[i];
+        for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
+        {
+            force += deferredForce[incoming[e]];
+            torque += deferredTorque[incoming[e]];
+        }
+        p.force[i] = force;
+        p.torque[i] = torque;
+    }
+}
 
-/// Wall slots of particles [firstParticle, endParticle): the scalar contact law, each touching
-/// contact added straight into its particle's sums (a particle's slots are contiguous, in slot
-/// order).
-ChunkHealth wallContactRange(World& world, Real dt, std::size_t firstParticle, std::size_t endParticle)
+ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
     WallContactList& list = world.wallContacts;
-    WorstOverlap worst{0, 0, false};
-    std::size_t touchingCount = 0;
-    for (std::size_t k = list.start[firstParticle]; k < list.start[endParticle]; ++k)
+    ContactHealth health{0, 0, false, 0};
+    if (list.size() == 0 || list.start.size() != p.size() + 1)
+        return health;
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
         const std::uint32_t i = list.particle[k];
         const Wall& wall = world.walls[list.wall[k]];
@@ -585,7 +605,7 @@ ChunkHealth wallContactRange(World& world, Real dt, std::size_t firstParticle, s
             list.setHistory(k, ContactHistory{});
             continue;
         }
-        ++touchingCount;
+        ++health.touching;
         const PairParams& params = world.pairs(p.material[i], wall.material);
         ContactInput in;
         in.normal = gap.normal;
@@ -612,73 +632,33 @@ ChunkHealth wallContactRange(World& world, Real dt, std::size_t firstParticle, s
         p.torque[i] += out.rollingTorque + cross(arm, out.tangentialForce);
 
         const Real ratio = in.overlap / r;
-        if (ratio > worst.ratio)
-            worst = {ratio, i, true};
+        if (ratio > health.maxOverlapRatio)
+            health = {ratio, i, true, health.touching};
     }
-    return {worst, touchingCount};
+    return health;
 }
 
-} // namespace
-
-void addCrossBlockForces(World& world)
+void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks)
 {
-    ParticleStore& p = world.particles;
-    const NeighborList& pairs = world.neighbors;
-    if (pairs.incoming.empty() || pairs.incomingStart.size() != p.size() + 1)
-        return;
-    const std::uint32_t* const start = pairs.incomingStart.data();
-    const std::uint32_t* const incoming = pairs.incoming.data();
-    const Vec3* const deferredForce = pairs.deferredForce.data();
-    const Vec3* const deferredTorque = pairs.deferredTorque.data();
-    parallelFor(p.size(),
-                [&](std::size_t i)
-                {
-                    if (start[i] == start[i + 1])
-                        return;
-                    Vec3 force = p.force[i], torque = p.torque[i];
-                    for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
-                    {
-                        force += deferredForce[incoming[e]];
-                        torque += deferredTorque[incoming[e]];
-                    }
-                    p.force[i] = force;
-                    p.torque[i] = torque;
-                });
-}
-
-void computeWallForces(World& world, Real dt)
-{
-    WallContactList& list = world.wallContacts;
-    const std::size_t n = world.particles.size();
-    world.health.touchingWalls = 0;
-    if (list.size() == 0 || list.start.size() != n + 1)
-        return;
-    const int chunks = std::min(loopThreads(list.size()), kMaxChunks);
-    if (chunks == 1)
-    {
-        const ChunkHealth health = wallContactRange(world, dt, 0, n);
-        world.health.touchingWalls = health.touching;
-        combine(world.health, &health.worst, 1);
-        return;
-    }
-    ChunkHealth health[kMaxChunks];
-    parallelChunks(n, chunks,
-                   [&](int chunk, std::size_t begin, std::size_t end)
-                   { health[chunk] = wallContactRange(world, dt, begin, end); });
-    WorstOverlap worst[kMaxChunks];
+    health.touchingWalls = 0;
     for (int c = 0; c < chunks; ++c)
     {
-        worst[c] = health[c].worst;
-        world.health.touchingWalls += health[c].touching;
+        health.touchingWalls += chunk[c].touching;
+        if (chunk[c].found && chunk[c].maxOverlapRatio > health.maxOverlapRatio)
+        {
+            health.maxOverlapRatio = chunk[c].maxOverlapRatio;
+            health.worstParticle = chunk[c].worstParticle;
+        }
     }
-    combine(world.health, worst, chunks);
 }
 
 void computeForces(World& world, Real dt)
 {
     computePairForces(world, dt);
-    addCrossBlockForces(world);
-    computeWallForces(world, dt);
+    const std::size_t n = world.particles.size();
+    addCrossBlockForces(world, 0, n);
+    const ContactHealth walls = computeWallForces(world, dt, 0, n);
+    mergeWallHealth(world.health, &walls, 1);
 }
 
 } // namespace veridem::dem

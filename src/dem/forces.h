@@ -14,15 +14,26 @@ namespace veridem::dem
 /// world.health.
 void computePairForces(World& world, Real dt);
 
-/// Stage 4: adds each particle's incoming cross-block contacts, in slot order (bit-identical for
-/// any thread count).
-void addCrossBlockForces(World& world);
+/// Contact health of one chunk of particles (combined in chunk order by mergeWallHealth).
+struct ContactHealth
+{
+    Real maxOverlapRatio;        // largest overlap / radius in the chunk [-]
+    std::uint32_t worstParticle; // its particle (the first in slot order on ties)
+    bool found;                  // some contact of the chunk touched
+    std::size_t touching;        // contacts touching
+};
 
-/// Stage 5, walls: adds every touching particle-wall contact to its particle, in slot order;
-/// continues world.health.
-void computeWallForces(World& world, Real dt);
+/// Stage 4a, particles [begin, end): adds each one's incoming cross-block contacts, in slot order
+/// (bit-identical for any thread count).
+void addCrossBlockForces(World& world, std::size_t begin, std::size_t end);
 
-/// All three, in order.
+/// Stage 4b, particles [begin, end): adds each one's touching wall contacts, in slot order.
+ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::size_t end);
+
+/// Folds per-chunk wall health into world health in chunk order (sets touchingWalls).
+void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks);
+
+/// Stages 3 and 4 for all particles, serially (no kick): the initial evaluation.
 void computeForces(World& world, Real dt);
 
 } // namespace veridem::dem

@@ -37,45 +37,20 @@ inline void recordFirstNonFinite(const ParticleStore& p, StepHealth& health)
         }
 }
 
-/// v += dt/2 a; w += dt/2 alpha; records the first non-finite particle in `health`.
-inline void kick(ParticleStore& p, const Vec3& gravity, Real dt, StepHealth& health)
+/// Particles [begin, end): v += dt/2 a; w += dt/2 alpha. Returns false if some position or
+/// velocity of the range is not finite (recordFirstNonFinite finds it).
+inline bool kick(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end)
 {
     const Real half = 0.5 * dt;
-    const std::size_t n = p.size();
-    const int chunks = std::min(loopThreads(n), 64);
-    if (chunks == 1)
+    bool finite = true;
+    for (std::size_t i = begin; i < end; ++i)
     {
-        bool finite = true;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
-            p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
-            finite = finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) &&
-                     isFinite(p.angularVelocity[i]);
-        }
-        health.finite = finite;
-        if (!finite)
-            recordFirstNonFinite(p, health);
-        return;
+        p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+        p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+        finite =
+            finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) && isFinite(p.angularVelocity[i]);
     }
-    bool chunkFinite[64];
-    parallelChunks(n, chunks,
-                   [&](int c, std::size_t begin, std::size_t end)
-                   {
-                       bool finite = true;
-                       for (std::size_t i = begin; i < end; ++i)
-                       {
-                           p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
-                           p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
-                           finite = finite && isFinite(p.position[i]) && isFinite(p.velocity[i]) &&
-                                    isFinite(p.angularVelocity[i]);
-                       }
-                       chunkFinite[c] = finite;
-                   });
-    const bool finite = std::all_of(chunkFinite, chunkFinite + chunks, [](bool b) { return b; });
-    health.finite = finite;
-    if (!finite)
-        recordFirstNonFinite(p, health);
+    return finite;
 }
 
 /// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry

@@ -6,11 +6,10 @@
 //                  skin/2 (or a wall translated more than skin/2)
 //   pairs          pair contact forces at x(t+dt) from the half-step velocities, summed into
 //                  the particles block by block (parallel over fixed blocks of particles)
-//   cross-block    each particle adds its contacts with earlier blocks, in slot order
-//   walls          particle-wall contacts, added per particle in slot order
-//                  (every sum has a fixed order: the same bits for any number of threads,
-//                  STYLE 3.4; neighbor_list.h)
-//   kick           v(t+dt) = v(t+dt/2) + dt/2 a(t+dt);  w likewise
+//   particles      one pass per particle: its contacts with earlier blocks, then its wall
+//                  contacts (each in slot order: every sum has a fixed order, the same bits for
+//                  any number of threads, STYLE 3.4; neighbor_list.h), then the kick
+//                  v(t+dt) = v(t+dt/2) + dt/2 a(t+dt);  w likewise
 //
 // The dashpots and the tangential-spring increment use the half-step velocities: the spring
 // increment vt dt is then exactly the relative displacement over [t, t+dt]. Output never happens
@@ -21,6 +20,7 @@
 #include "dem/forces.h"
 #include "dem/integrate.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace veridem::dem
@@ -86,6 +86,29 @@ void rebuildContactLists(World& world)
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin);
 }
 
+/// Stage 4, one pass over the particles while each chunk's particles are hot in cache: their
+/// cross-block pair contacts, their wall contacts (both in slot order), then the final half kick
+/// v(t+dt) = v(t+dt/2) + dt/2 a(t+dt). Health is combined in chunk order.
+void finishParticles(World& world, Real dt)
+{
+    ParticleStore& p = world.particles;
+    const std::size_t n = p.size();
+    const int chunks = std::min(loopThreads(n), 64);
+    ContactHealth walls[64];
+    bool finite[64];
+    parallelChunks(n, chunks,
+                   [&](int c, std::size_t begin, std::size_t end)
+                   {
+                       addCrossBlockForces(world, begin, end);
+                       walls[c] = computeWallForces(world, dt, begin, end);
+                       finite[c] = kick(p, world.gravity, dt, begin, end);
+                   });
+    mergeWallHealth(world.health, walls, chunks);
+    world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
+    if (!world.health.finite)
+        recordFirstNonFinite(p, world.health);
+}
+
 } // namespace
 
 void prepare(World& world)
@@ -126,12 +149,8 @@ void step(World& world, Real dt)
     clock.lap(&StepProfile::neighbours);
     computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
     clock.lap(&StepProfile::pairForces);
-    addCrossBlockForces(world); // 4. contacts across blocks, fixed order
-    clock.lap(&StepProfile::gather);
-    computeWallForces(world, dt); // 5. wall contacts
-    clock.lap(&StepProfile::wallForces);
-    kick(world.particles, world.gravity, dt, world.health); // v(t+dt)
-    clock.lap(&StepProfile::integration);
+    finishParticles(world, dt); // 4. cross-block and wall contacts, then v(t+dt)
+    clock.lap(&StepProfile::particlePass);
 
     world.time += dt;
     ++world.stepCount;

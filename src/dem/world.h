@@ -31,11 +31,10 @@ struct StepHealth
 struct StepProfile
 {
     bool enabled = false;
-    double integration = 0; // kick-drift, wall motion, kick
-    double neighbours = 0;  // rebuild test + Verlet list rebuild + history merge
-    double pairForces = 0;  // pair contacts, summed within blocks (stage 3)
-    double gather = 0;      // cross-block sums (stage 4)
-    double wallForces = 0;  // wall contacts (stage 5)
+    double integration = 0;  // kick-drift, wall motion
+    double neighbours = 0;   // rebuild test + Verlet list rebuild + history merge
+    double pairForces = 0;   // pair contacts, summed within blocks (stage 3)
+    double particlePass = 0; // cross-block sums, wall contacts, kick (stage 4)
 };
 
 struct World

@@ -131,15 +131,13 @@ TEST(Determinism, BlockSumsEqualAPlainSerialLoopOverSlots)
         step(world, 1e-5);
     const Real dt = 1e-5;
     World reference = world;
-    computePairForces(world, dt);
-    addCrossBlockForces(world);
-    computeWallForces(world, dt);
+    computeForces(world, dt); // stages 3 and 4
 
     // Reference: walls alone through computeWallForces, then the pairs in a plain loop.
     ParticleStore& p = reference.particles;
     std::fill(p.force.begin(), p.force.end(), Vec3{});
     std::fill(p.torque.begin(), p.torque.end(), Vec3{});
-    computeWallForces(reference, dt);
+    computeWallForces(reference, dt, 0, p.size());
     const NeighborList& list = reference.neighbors;
     std::size_t touching = 0;
     for (std::size_t k = 0; k < list.size(); ++k)
