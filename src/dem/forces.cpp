@@ -67,8 +67,8 @@ ExtraInputs extraInputsFor(const PairParams& params)
 /// anything, so GCC would otherwise reload every vector's pointer after it.
 struct PairSink
 {
-    Vec3* force;                        // particle sums [N]
-    Vec3* torque;                       // [N m]
+    NeighborList::Sum* force;           // per-particle sums [N]
+    NeighborList::Sum* torque;          // [N m]
     const std::uint32_t* deferredIndex; // per slot, or NeighborList::kInBlock
     Vec3* deferredForce;                // on the second particle of a cross-block slot [N]
     Vec3* deferredTorque;               // [N m]
@@ -76,7 +76,7 @@ struct PairSink
     std::uint8_t* mayBeActive;
 
     explicit PairSink(World& world)
-        : force(world.particles.force.data()), torque(world.particles.torque.data()),
+        : force(world.neighbors.forceSum.data()), torque(world.neighbors.torqueSum.data()),
           deferredIndex(world.neighbors.deferredIndex.data()),
           deferredForce(world.neighbors.deferredForce.data()),
           deferredTorque(world.neighbors.deferredTorque.data()),
@@ -84,17 +84,30 @@ struct PairSink
     {
     }
 
+    static void add(NeighborList::Sum& sum, const Vec3& v)
+    {
+        sum.x += v.x;
+        sum.y += v.y;
+        sum.z += v.z;
+    }
+    static void subtract(NeighborList::Sum& sum, const Vec3& v)
+    {
+        sum.x -= v.x;
+        sum.y -= v.y;
+        sum.z -= v.z;
+    }
+
     /// Adds the contact of slot k: force f [N] on i and -f on j, torques ti on i and tj on j [N m].
     void add(std::uint32_t k, std::uint32_t i, std::uint32_t j, const Vec3& f, const Vec3& ti,
              const Vec3& tj) const
     {
-        force[i] += f;
-        torque[i] += ti;
+        add(force[i], f);
+        add(torque[i], ti);
         const std::uint32_t d = deferredIndex[k];
         if (d == NeighborList::kInBlock)
         {
-            force[j] -= f;
-            torque[j] += tj;
+            subtract(force[j], f);
+            add(torque[j], tj);
         }
         else
         {
@@ -159,10 +172,6 @@ struct PairBatch
     // per-lane pair parameters (filled only if there is more than one material pair)
     alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
         mu[kBatch];
-    // outputs
-    alignas(32) double fx[kBatch], fy[kBatch], fz[kBatch];
-    alignas(32) double tix[kBatch], tiy[kBatch], tiz[kBatch], tjx[kBatch], tjy[kBatch], tjz[kBatch];
-    alignas(32) double springX[kBatch], springY[kBatch], springZ[kBatch], ratio[kBatch];
     std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
 
@@ -195,6 +204,31 @@ inline void store(double* a, const Lanes& v)
 inline Lanes broadcast(double x)
 {
     return Lanes{} + x;
+}
+
+/// Four contacts' x, y, z lanes -> one (x, y, z, 0) vector per contact.
+inline void transpose(const Lanes& x, const Lanes& y, const Lanes& z, Lanes out[kLanes])
+{
+    using Index = long long __attribute__((vector_size(32)));
+    const Lanes zero = {};
+    const Lanes xyLow = __builtin_shuffle(x, y, Index{0, 4, 1, 5});  // x0 y0 x1 y1
+    const Lanes xyHigh = __builtin_shuffle(x, y, Index{2, 6, 3, 7}); // x2 y2 x3 y3
+    const Lanes z0Low = __builtin_shuffle(z, zero, Index{0, 4, 1, 5});
+    const Lanes z0High = __builtin_shuffle(z, zero, Index{2, 6, 3, 7});
+    out[0] = __builtin_shuffle(xyLow, z0Low, Index{0, 1, 4, 5});
+    out[1] = __builtin_shuffle(xyLow, z0Low, Index{2, 3, 6, 7});
+    out[2] = __builtin_shuffle(xyHigh, z0High, Index{0, 1, 4, 5});
+    out[3] = __builtin_shuffle(xyHigh, z0High, Index{2, 3, 6, 7});
+}
+
+/// sum[0..3] += v; sum[0..3] -= v (a padded NeighborList::Sum).
+inline void addInto(double* sum, const Lanes& v)
+{
+    store(sum, load(sum) + v);
+}
+inline void subtractFrom(double* sum, const Lanes& v)
+{
+    store(sum, load(sum) - v);
 }
 
 /// Per-chunk health: the largest overlap ratio (first slot in order wins ties) and the number of
@@ -352,33 +386,42 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
             newSpringY = sticks ? springY : (stiff ? -(slideY + etaT * vty) / kt : zero);
             newSpringZ = sticks ? springZ : (stiff ? -(slideZ + etaT * vtz) / kt : zero);
         }
-        store(b.springX + m, newSpringX);
-        store(b.springY + m, newSpringY);
-        store(b.springZ + m, newSpringZ);
-        store(b.fx + m, normalForce * nx + ftx);
-        store(b.fy + m, normalForce * ny + fty);
-        store(b.fz + m, normalForce * nz + ftz);
-
+        const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
         // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j, rolling = 0 here.
         const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
-        store(b.tix + m, zero - leverI * ttx);
-        store(b.tiy + m, zero - leverI * tty);
-        store(b.tiz + m, zero - leverI * ttz);
-        store(b.tjx + m, negativeZero - leverJ * ttx);
-        store(b.tjy + m, negativeZero - leverJ * tty);
-        store(b.tjz + m, negativeZero - leverJ * ttz);
-        store(b.ratio + m, overlap / (rj < ri ? rj : ri));
-    }
+        const Lanes tix = zero - leverI * ttx, tiy = zero - leverI * tty, tiz = zero - leverI * ttz;
+        const Lanes tjx = negativeZero - leverJ * ttx, tjy = negativeZero - leverJ * tty,
+                    tjz = negativeZero - leverJ * ttz;
+        const Lanes ratio = overlap / (rj < ri ? rj : ri);
 
-    for (std::size_t m = 0; m < count; ++m)
-    {
-        const std::uint32_t k = b.slot[m];
-        sink.mayBeActive[k] = 1;
-        sink.spring[k] = {b.springX[m], b.springY[m], b.springZ[m]};
-        sink.add(k, b.i[m], b.j[m], {b.fx[m], b.fy[m], b.fz[m]}, {b.tix[m], b.tiy[m], b.tiz[m]},
-                 {b.tjx[m], b.tjy[m], b.tjz[m]});
-        if (b.ratio[m] > worst.ratio)
-            worst = {b.ratio[m], b.i[m], true};
+        // Scatter, in lane (= slot) order: one (x, y, z, 0) vector per contact and sum.
+        Lanes force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
+        transpose(fx, fy, fz, force);
+        transpose(tix, tiy, tiz, torqueI);
+        transpose(tjx, tjy, tjz, torqueJ);
+        transpose(newSpringX, newSpringY, newSpringZ, spring);
+        const std::size_t lanes = std::min(kLanes, count - m);
+        for (std::size_t l = 0; l < lanes; ++l)
+        {
+            const std::uint32_t k = b.slot[m + l], i = b.i[m + l], j = b.j[m + l];
+            sink.mayBeActive[k] = 1;
+            sink.spring[k] = {spring[l][0], spring[l][1], spring[l][2]};
+            addInto(&sink.force[i].x, force[l]);
+            addInto(&sink.torque[i].x, torqueI[l]);
+            const std::uint32_t d = sink.deferredIndex[k];
+            if (d == NeighborList::kInBlock)
+            {
+                subtractFrom(&sink.force[j].x, force[l]);
+                addInto(&sink.torque[j].x, torqueJ[l]);
+            }
+            else
+            {
+                sink.deferredForce[d] = {-force[l][0], -force[l][1], -force[l][2]};
+                sink.deferredTorque[d] = {torqueJ[l][0], torqueJ[l][1], torqueJ[l][2]};
+            }
+            if (ratio[l] > worst.ratio)
+                worst = {ratio[l], i, true};
+        }
     }
 }
 
@@ -443,8 +486,8 @@ void computePairForces(World& world, Real dt)
     const std::size_t pairCount = list.size();
     if (pairCount == 0) // e.g. one ball on a turntable: nothing but the reset
     {
-        std::fill(p.force.begin(), p.force.end(), Vec3{});
-        std::fill(p.torque.begin(), p.torque.end(), Vec3{});
+        std::fill(list.forceSum.begin(), list.forceSum.end(), NeighborList::Sum{});
+        std::fill(list.torqueSum.begin(), list.torqueSum.end(), NeighborList::Sum{});
         return;
     }
     bool allBatchable = world.batchedContactKernel;
@@ -487,8 +530,8 @@ void computePairForces(World& world, Real dt)
         {
             const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
                               endParticle = std::min(blockEdge[chunk + 1] * B, n);
-            std::fill(sink.force + firstParticle, sink.force + endParticle, Vec3{});
-            std::fill(sink.torque + firstParticle, sink.torque + endParticle, Vec3{});
+            std::fill(sink.force + firstParticle, sink.force + endParticle, NeighborList::Sum{});
+            std::fill(sink.torque + firstParticle, sink.torque + endParticle, NeighborList::Sum{});
             const std::size_t begin = activeFrom(firstParticle),
                               end = endParticle == n ? activeCount : activeFrom(endParticle);
             WorstOverlap worst{0, 0, false};
@@ -565,22 +608,23 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
     const NeighborList& pairs = world.neighbors;
-    if (pairs.incoming.empty() || pairs.incomingStart.size() != p.size() + 1)
+    if (pairs.forceSum.size() != p.size()) // no list built (no particles)
         return;
+    const bool hasIncoming = !pairs.incoming.empty();
     const std::uint32_t* const start = pairs.incomingStart.data();
     const std::uint32_t* const incoming = pairs.incoming.data();
     const Vec3* const deferredForce = pairs.deferredForce.data();
     const Vec3* const deferredTorque = pairs.deferredTorque.data();
     for (std::size_t i = begin; i < end; ++i)
     {
-        if (start[i] == start[i + 1])
-            continue;
-        Vec3 force = p.force[i], torque = p.torque[i];
-        for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
-        {
-            force += deferredForce[incoming[e]];
-            torque += deferredTorque[incoming[e]];
-        }
+        const NeighborList::Sum &f = pairs.forceSum[i], &t = pairs.torqueSum[i];
+        Vec3 force{f.x, f.y, f.z}, torque{t.x, t.y, t.z};
+        if (hasIncoming)
+            for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
+            {
+                force += deferredForce[incoming[e]];
+                torque += deferredTorque[incoming[e]];
+            }
         p.force[i] = force;
         p.torque[i] = torque;
     }

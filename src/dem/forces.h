@@ -7,9 +7,9 @@
 namespace veridem::dem
 {
 
-/// Stage 3, pairs: sets every particle's force [N] and torque [N m] to the sum of its touching
-/// pair contacts inside its block (neighbor_list.h), in slot order, and leaves the cross-block
-/// shares in the slots' deferred entries; clears the history of slots that opened. dt [s] is the
+/// Stage 3, pairs: sets every particle's pair sums (NeighborList::forceSum [N], torqueSum [N m])
+/// to the sum of its touching pair contacts inside its block (neighbor_list.h), in slot order, and leaves the
+/// cross-block shares in the slots' deferred entries; clears the history of slots that opened. dt [s] is the
 /// step the tangential spring increments over (0 for the initial evaluation). Resets and updates
 /// world.health.
 void computePairForces(World& world, Real dt);
@@ -23,8 +23,8 @@ struct ContactHealth
     std::size_t touching;        // contacts touching
 };
 
-/// Stage 4a, particles [begin, end): adds each one's incoming cross-block contacts, in slot order
-/// (bit-identical for any thread count).
+/// Stage 4a, particles [begin, end): force and torque = pair sums + the incoming cross-block
+/// contacts, in slot order (bit-identical for any thread count).
 void addCrossBlockForces(World& world, std::size_t begin, std::size_t end);
 
 /// Stage 4b, particles [begin, end): adds each one's touching wall contacts, in slot order.

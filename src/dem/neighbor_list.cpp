@@ -106,6 +106,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
     positionAtBuild_.assign(particles.position.begin(), particles.position.end());
     firstStart.assign(n + 1, 0);
     incomingStart.assign(n + 1, 0);
+    forceSum.assign(n, Sum{});
+    torqueSum.assign(n, Sum{});
     if (n == 0)
     {
         first.clear();
