@@ -14,6 +14,7 @@
 // The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
 // stage and the kinetic energy at the end. Nothing is written during the timed loop.
+#include "dem/forces.h"
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
 
@@ -256,6 +257,7 @@ int main(int argc, char** argv)
             particleBytes / static_cast<double>(n),
             static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
             static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
+        std::printf("  contact kernel %s (VERIDEM_KERNEL=avx2|portable to choose)\n", laneKernelName());
         std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
                     world.neighbors.size(),
                     static_cast<double>(world.neighbors.size()) / static_cast<double>(n),

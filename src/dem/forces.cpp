@@ -16,13 +16,16 @@
 // independent of the thread count.
 #include "dem/forces.h"
 
+#include "core/error.h"
 #include "dem/contact_law.h"
 #include "dem/parallel.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <immintrin.h>
+#include <string>
 
 namespace veridem::dem
 {
@@ -131,26 +134,95 @@ struct PairSink
 };
 
 // ---------------------------------------------------------------------------------------------
-// Four contacts at a time (linear spring-dashpot, no rolling resistance: the reference bed's law).
+// Contacts in vector lanes (linear spring-dashpot, no rolling resistance: the reference bed's law).
 //
 // One contact is a chain of dependent divisions and square roots (normal, lever arms, m*, the
 // end-of-step normal speed, the spring rotation, the Coulomb cap), so a scalar loop waits on
-// latency. Here the same operations run on four independent contacts in the lanes of a GCC vector
-// type (two SSE2 registers, or one AVX register with VERIDEM_NATIVE): every lane performs exactly
-// the IEEE operations of the scalar path (pairContactScalar + evaluateContact) in the same order,
-// branches become selects, so the bits are those of the scalar path
-// (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar path.
+// latency. Here the same operations run on independent contacts in the lanes of a GCC vector type:
+// four with AVX2 (x86-64-v3), two with SSE2 (the portable variant), chosen at run time from the
+// CPU. (Eight AVX-512 lanes measured no faster on Zen 4: the loads and stores around the
+// arithmetic dominate.) Every lane performs exactly the IEEE operations of the scalar
+// path (pairContactScalar + evaluateContact) in the same order, branches become selects, and no
+// multiply-add is fused (-ffp-contract=off), so the bits are those of the scalar path on every
+// variant (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar
+// path.
 // ---------------------------------------------------------------------------------------------
-using Lanes = double __attribute__((vector_size(32)));
-using LaneMask = long long __attribute__((vector_size(32)));
-constexpr std::size_t kLanes = 4;
+using Lanes2 = double __attribute__((vector_size(16)));
+using Lanes4 = double __attribute__((vector_size(32)));
+using Index4 = long long __attribute__((vector_size(32)));
 
-inline Lanes laneSqrt(Lanes x) // correctly rounded, as std::sqrt (one vsqrtpd with -fno-math-errno)
+template <class V> constexpr std::size_t kWidth = sizeof(V) / sizeof(double);
+
+// The helpers are always inlined, so that they are compiled for the instruction set of the
+// kernel variant that calls them.
+template <class V> VERIDEM_HOT_INLINE V laneSqrt(V x) // correctly rounded, as std::sqrt
 {
-    Lanes r;
-    for (std::size_t l = 0; l < kLanes; ++l)
-        r[l] = __builtin_sqrt(x[l]);
+    V r;
+    for (std::size_t l = 0; l < kWidth<V>; ++l)
+        r[l] = __builtin_sqrt(x[l]); // one packed square root (-fno-math-errno)
     return r;
+}
+
+template <class M> VERIDEM_HOT_INLINE bool anyLane(const M& mask)
+{
+    bool any = false;
+    for (std::size_t l = 0; l < sizeof(M) / sizeof(long long); ++l)
+        any = any || mask[l] != 0;
+    return any;
+}
+
+template <class M> VERIDEM_HOT_INLINE bool allLanes(const M& mask)
+{
+    bool all = true;
+    for (std::size_t l = 0; l < sizeof(M) / sizeof(long long); ++l)
+        all = all && mask[l] != 0;
+    return all;
+}
+
+template <class V> VERIDEM_HOT_INLINE V load(const double* a)
+{
+    V v;
+    std::memcpy(&v, a, sizeof v);
+    return v;
+}
+template <class V> VERIDEM_HOT_INLINE void store(double* a, const V& v)
+{
+    std::memcpy(a, &v, sizeof v);
+}
+template <class V> VERIDEM_HOT_INLINE V broadcast(double x)
+{
+    return V{} + x;
+}
+
+/// Four contacts' x, y, z lanes -> one (x, y, z, 0) vector per contact.
+VERIDEM_HOT_INLINE void transpose(const Lanes4& x, const Lanes4& y, const Lanes4& z, Lanes4* out)
+{
+    const Lanes4 zero = {};
+    const Lanes4 xyLow = __builtin_shuffle(x, y, Index4{0, 4, 1, 5});  // x0 y0 x1 y1
+    const Lanes4 xyHigh = __builtin_shuffle(x, y, Index4{2, 6, 3, 7}); // x2 y2 x3 y3
+    const Lanes4 z0Low = __builtin_shuffle(z, zero, Index4{0, 4, 1, 5});
+    const Lanes4 z0High = __builtin_shuffle(z, zero, Index4{2, 6, 3, 7});
+    out[0] = __builtin_shuffle(xyLow, z0Low, Index4{0, 1, 4, 5});
+    out[1] = __builtin_shuffle(xyLow, z0Low, Index4{2, 3, 6, 7});
+    out[2] = __builtin_shuffle(xyHigh, z0High, Index4{0, 1, 4, 5});
+    out[3] = __builtin_shuffle(xyHigh, z0High, Index4{2, 3, 6, 7});
+}
+
+/// Two contacts (the portable variant: one SSE2 register per quantity).
+VERIDEM_HOT_INLINE void transpose(const Lanes2& x, const Lanes2& y, const Lanes2& z, Lanes4* out)
+{
+    out[0] = Lanes4{x[0], y[0], z[0], 0.0};
+    out[1] = Lanes4{x[1], y[1], z[1], 0.0};
+}
+
+/// sum[0..3] += v; sum[0..3] -= v (a padded NeighborList::Sum).
+VERIDEM_HOT_INLINE void addInto(double* sum, const Lanes4& v)
+{
+    store(sum, load<Lanes4>(sum) + v);
+}
+VERIDEM_HOT_INLINE void subtractFrom(double* sum, const Lanes4& v)
+{
+    store(sum, load<Lanes4>(sum) - v);
 }
 
 /// True if pairs of these parameters may take the lane path (all pairs must, or none does).
@@ -159,76 +231,28 @@ bool batchable(const PairParams& params)
     return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
 }
 
-constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of kLanes); ~25 KB, in L1
+constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of every width); ~20 KB, in L1
 
 /// Per-batch lanes: inputs are gathered here with scalar stores, read back as vectors long after
 /// (a vector load right after scalar stores to the same bytes misses store forwarding).
 struct PairBatch
 {
-    alignas(32) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
-    alignas(32) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
-    alignas(32) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
-    alignas(32) double effectiveMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    alignas(64) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
+    alignas(64) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
+    alignas(64) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
+    alignas(64) double effectiveMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
     // per-lane pair parameters (filled only if there is more than one material pair)
-    alignas(32) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
+    alignas(64) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
         mu[kBatch];
     std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
 
-inline bool anyLane(const LaneMask& mask)
+/// A pair parameter in lanes: broadcast if there is one material pair, else per lane.
+template <class V>
+VERIDEM_HOT_INLINE V parameter(const PairParams* uniform, double PairParams::*field, const double* perLane,
+                               std::size_t m)
 {
-    bool any = false;
-    for (std::size_t l = 0; l < kLanes; ++l)
-        any = any || mask[l] != 0;
-    return any;
-}
-
-inline bool allLanes(const LaneMask& mask)
-{
-    bool all = true;
-    for (std::size_t l = 0; l < kLanes; ++l)
-        all = all && mask[l] != 0;
-    return all;
-}
-
-inline Lanes load(const double* a)
-{
-    Lanes v;
-    std::memcpy(&v, a, sizeof v);
-    return v;
-}
-inline void store(double* a, const Lanes& v)
-{
-    std::memcpy(a, &v, sizeof v);
-}
-inline Lanes broadcast(double x)
-{
-    return Lanes{} + x;
-}
-
-/// Four contacts' x, y, z lanes -> one (x, y, z, 0) vector per contact.
-inline void transpose(const Lanes& x, const Lanes& y, const Lanes& z, Lanes out[kLanes])
-{
-    using Index = long long __attribute__((vector_size(32)));
-    const Lanes zero = {};
-    const Lanes xyLow = __builtin_shuffle(x, y, Index{0, 4, 1, 5});  // x0 y0 x1 y1
-    const Lanes xyHigh = __builtin_shuffle(x, y, Index{2, 6, 3, 7}); // x2 y2 x3 y3
-    const Lanes z0Low = __builtin_shuffle(z, zero, Index{0, 4, 1, 5});
-    const Lanes z0High = __builtin_shuffle(z, zero, Index{2, 6, 3, 7});
-    out[0] = __builtin_shuffle(xyLow, z0Low, Index{0, 1, 4, 5});
-    out[1] = __builtin_shuffle(xyLow, z0Low, Index{2, 3, 6, 7});
-    out[2] = __builtin_shuffle(xyHigh, z0High, Index{0, 1, 4, 5});
-    out[3] = __builtin_shuffle(xyHigh, z0High, Index{2, 3, 6, 7});
-}
-
-/// sum[0..3] += v; sum[0..3] -= v (a padded NeighborList::Sum).
-inline void addInto(double* sum, const Lanes& v)
-{
-    store(sum, load(sum) + v);
-}
-inline void subtractFrom(double* sum, const Lanes& v)
-{
-    store(sum, load(sum) - v);
+    return uniform ? broadcast<V>(uniform->*field) : load<V>(perLane + m);
 }
 
 /// Per-chunk health: the largest overlap ratio (first slot in order wins ties) and the number of
@@ -243,10 +267,13 @@ struct ChunkHealth
 /// separation and radii already collected by the caller; the law batchable) and adds them into
 /// the sink in lane order, exactly as the scalar path does. `uniform`: the pair parameters if
 /// there is a single material pair (no table look-up), else null.
-[[gnu::noinline, gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void
-pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t count, WorstOverlap& worst,
-                  PairBatch& b, const PairParams* uniform)
+template <class Lanes>
+VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& sink, Real dt,
+                                          std::size_t count, WorstOverlap& worst, PairBatch& b,
+                                          const PairParams* uniform)
 {
+    constexpr std::size_t kLanes = kWidth<Lanes>;
+    using LaneMask = decltype(Lanes{} < Lanes{});
     const ParticleStore& p = world.particles;
     const NeighborList& list = world.neighbors;
     const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
@@ -295,15 +322,13 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
             b.etaRatio[m] = pp.tangentialDampingRatio;
             b.mu[m] = pp.mu;
         }
-    const auto parameter = [&](double PairParams::*field, const double* perLane, std::size_t m)
-    { return uniform ? broadcast(uniform->*field) : load(perLane + m); };
 
     const Lanes zero = {}, one = zero + 1.0, negativeZero = -zero;
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         // Geometry (as pairContactScalar).
-        const Lanes sx = load(b.sx + m), sy = load(b.sy + m), sz = load(b.sz + m);
-        const Lanes ri = load(b.ri + m), rj = load(b.rj + m);
+        const Lanes sx = load<Lanes>(b.sx + m), sy = load<Lanes>(b.sy + m), sz = load<Lanes>(b.sz + m);
+        const Lanes ri = load<Lanes>(b.ri + m), rj = load<Lanes>(b.rj + m);
         const Lanes touching = ri + rj;
         const Lanes distance2 = sx * sx + sy * sy + sz * sz;
         const Lanes distance = laneSqrt(distance2);
@@ -315,26 +340,28 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
         const Lanes overlap = touching - distance;
         const Lanes share = distance / touching;
         const Lanes leverI = ri * share, leverJ = rj * share;
-        const Lanes ax = load(b.wix + m) * leverI + load(b.wjx + m) * leverJ;
-        const Lanes ay = load(b.wiy + m) * leverI + load(b.wjy + m) * leverJ;
-        const Lanes az = load(b.wiz + m) * leverI + load(b.wjz + m) * leverJ;
-        const Lanes rvx = load(b.dvx + m) - (ay * nz - az * ny);
-        const Lanes rvy = load(b.dvy + m) - (az * nx - ax * nz);
-        const Lanes rvz = load(b.dvz + m) - (ax * ny - ay * nx);
-        const Lanes effectiveMass = load(b.effectiveMass + m);
+        const Lanes ax = load<Lanes>(b.wix + m) * leverI + load<Lanes>(b.wjx + m) * leverJ;
+        const Lanes ay = load<Lanes>(b.wiy + m) * leverI + load<Lanes>(b.wjy + m) * leverJ;
+        const Lanes az = load<Lanes>(b.wiz + m) * leverI + load<Lanes>(b.wjz + m) * leverJ;
+        const Lanes rvx = load<Lanes>(b.dvx + m) - (ay * nz - az * ny);
+        const Lanes rvy = load<Lanes>(b.dvy + m) - (az * nx - ax * nz);
+        const Lanes rvz = load<Lanes>(b.dvz + m) - (ax * ny - ay * nx);
+        const Lanes effectiveMass = load<Lanes>(b.effectiveMass + m);
 
         // contactCoefficients(), linear branch.
-        const Lanes kn = parameter(&PairParams::kn, b.kn, m);
-        const Lanes kt = parameter(&PairParams::ktRatio, b.ktRatio, m) * kn;
-        const Lanes rate = parameter(&PairParams::dampingRate, b.rate, m);
+        const Lanes kn = parameter<Lanes>(uniform, &PairParams::kn, b.kn, m);
+        const Lanes kt = parameter<Lanes>(uniform, &PairParams::ktRatio, b.ktRatio, m) * kn;
+        const Lanes rate = parameter<Lanes>(uniform, &PairParams::dampingRate, b.rate, m);
         const LaneMask fromRate = rate >= zero;
         Lanes etaN = rate * effectiveMass;
         if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
         {
-            const Lanes fromRatio = uniform ? broadcast(2.0 * uniform->dampingRatio) : load(b.fromRatio + m);
+            const Lanes fromRatio =
+                uniform ? broadcast<Lanes>(2.0 * uniform->dampingRatio) : load<Lanes>(b.fromRatio + m);
             etaN = fromRate ? etaN : fromRatio * laneSqrt(effectiveMass * kn);
         }
-        const Lanes etaT = parameter(&PairParams::tangentialDampingRatio, b.etaRatio, m) * etaN;
+        const Lanes etaT =
+            parameter<Lanes>(uniform, &PairParams::tangentialDampingRatio, b.etaRatio, m) * etaN;
 
         // evaluateContact(): 1. normal force.
         const Lanes normalSpeed = rvx * nx + rvy * ny + rvz * nz;
@@ -354,7 +381,7 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
 
         // 2. coulombSpringForce().
         const Lanes vtx = rvx - normalSpeed * nx, vty = rvy - normalSpeed * ny, vtz = rvz - normalSpeed * nz;
-        const Lanes hx = load(b.hx + m), hy = load(b.hy + m), hz = load(b.hz + m);
+        const Lanes hx = load<Lanes>(b.hx + m), hy = load<Lanes>(b.hy + m), hz = load<Lanes>(b.hz + m);
         const Lanes oldLength2 = hx * hx + hy * hy + hz * hz;
         const Lanes along = hx * nx + hy * ny + hz * nz;
         const Lanes qx = hx - along * nx, qy = hy - along * ny, qz = hz - along * nz;
@@ -368,7 +395,8 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
         const Lanes springX = px + vtx * dt, springY = py + vty * dt, springZ = pz + vtz * dt;
         const Lanes trialX = -kt * springX - etaT * vtx, trialY = -kt * springY - etaT * vty,
                     trialZ = -kt * springZ - etaT * vtz;
-        const Lanes cap = parameter(&PairParams::mu, b.mu, m) * (normalForce > zero ? normalForce : zero);
+        const Lanes cap =
+            parameter<Lanes>(uniform, &PairParams::mu, b.mu, m) * (normalForce > zero ? normalForce : zero);
         const Lanes trialLength2 = trialX * trialX + trialY * trialY + trialZ * trialZ;
         const LaneMask sticks = trialLength2 <= cap * cap;
         Lanes ftx = trialX, fty = trialY, ftz = trialZ, newSpringX = springX, newSpringY = springY,
@@ -395,7 +423,7 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
         const Lanes ratio = overlap / (rj < ri ? rj : ri);
 
         // Scatter, in lane (= slot) order: one (x, y, z, 0) vector per contact and sum.
-        Lanes force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
+        Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
         transpose(fx, fy, fz, force);
         transpose(tix, tiy, tiz, torqueI);
         transpose(tjx, tjy, tjz, torqueJ);
@@ -423,6 +451,57 @@ pairContactsBatch(const World& world, const PairSink& sink, Real dt, std::size_t
                 worst = {ratio[l], i, true};
         }
     }
+}
+
+[[gnu::target("arch=x86-64-v3")]] void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
+                                                        std::size_t count, WorstOverlap& worst, PairBatch& b,
+                                                        const PairParams* uniform)
+{
+    pairContactsLanes<Lanes4>(world, sink, dt, count, worst, b, uniform);
+}
+
+void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std::size_t count,
+                          WorstOverlap& worst, PairBatch& b, const PairParams* uniform)
+{
+    pairContactsLanes<Lanes2>(world, sink, dt, count, worst, b, uniform);
+}
+
+using PairKernel = void (*)(const World&, const PairSink&, Real, std::size_t, WorstOverlap&, PairBatch&,
+                            const PairParams*);
+
+struct KernelVariant
+{
+    const char* name;
+    PairKernel kernel;
+    bool (*supported)();
+};
+
+bool cpuHasAvx2()
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
+#else
+    return false;
+#endif
+}
+
+const KernelVariant kVariants[] = {{"avx2", pairContactsAvx2, cpuHasAvx2},
+                                   {"portable", pairContactsPortable, [] { return true; }}};
+
+/// The variant in use: VERIDEM_KERNEL if set (and supported), else the widest the CPU runs.
+const KernelVariant*& currentVariant()
+{
+    static const KernelVariant* variant = []
+    {
+        const char* wanted = std::getenv("VERIDEM_KERNEL");
+        for (const KernelVariant& v : kVariants)
+            if (v.supported() && (!wanted || !*wanted || std::strcmp(wanted, v.name) == 0))
+                return &v;
+        throw InputError(std::string("VERIDEM_KERNEL=") + wanted +
+                         ": not a contact kernel this CPU can run (avx2, portable)");
+    }();
+    return variant;
 }
 
 /// One touching contact through the general contact law (any model), added into the sink.
@@ -523,6 +602,7 @@ void computePairForces(World& world, Real dt)
     };
 
     const PairSink sink(world);
+    const PairKernel kernel = currentVariant()->kernel;
     ChunkHealth health[kMaxChunks];
     parallelChunks(
         static_cast<std::size_t>(chunks), chunks,
@@ -585,13 +665,13 @@ void computePairForces(World& world, Real dt)
                     sink.open(list, k);
                 if (m == kBatch)
                 {
-                    pairContactsBatch(world, sink, dt, m, worst, batch, uniform);
+                    kernel(world, sink, dt, m, worst, batch, uniform);
                     touchingCount += m;
                     m = 0;
                 }
             }
             if (m > 0)
-                pairContactsBatch(world, sink, dt, m, worst, batch, uniform);
+                kernel(world, sink, dt, m, worst, batch, uniform);
             touchingCount += m;
             health[chunk] = {worst, touchingCount};
         });
@@ -602,6 +682,22 @@ void computePairForces(World& world, Real dt)
         world.health.touchingPairs += health[c].touching;
     }
     combine(world.health, worst, chunks);
+}
+
+const char* laneKernelName()
+{
+    return currentVariant()->name;
+}
+
+bool selectLaneKernel(const std::string& name)
+{
+    for (const KernelVariant& v : kVariants)
+        if (name == v.name && v.supported())
+        {
+            currentVariant() = &v;
+            return true;
+        }
+    return false;
 }
 
 void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)

@@ -4,6 +4,8 @@
 
 #include "dem/world.h"
 
+#include <string>
+
 namespace veridem::dem
 {
 
@@ -32,6 +34,13 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
 
 /// Folds per-chunk wall health into world health in chunk order (sets touchingWalls).
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks);
+
+/// The instruction-set variant of the lane contact kernel in use: "avx2" (4 lanes, x86-64-v3) or
+/// "portable" (2 lanes, SSE2). The widest this CPU runs, unless the environment variable
+/// VERIDEM_KERNEL names another. All variants give the same bits.
+const char* laneKernelName();
+/// Selects a variant by name (tests, benchmarks); false if unknown or this CPU cannot run it.
+bool selectLaneKernel(const std::string& name);
 
 /// Stages 3 and 4 for all particles, serially (no kick): the initial evaluation.
 void computeForces(World& world, Real dt);
