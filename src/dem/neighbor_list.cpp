@@ -52,15 +52,15 @@ bool NeighborList::checkMotion(const ParticleStore& particles)
 void NeighborList::refreshActiveSlots(const ParticleStore& particles)
 {
     ++activeAge_;
-    const bool mayShrink = activeAge_ > 256 && innerSkin > skin / 16; // long-lived: try a tighter one
+    const bool mayShrink = activeAge_ > 128 && innerSkin > skin / 16; // long-lived: try a tighter one
     if (!activeStale_ && !mayShrink)
         return;
     // Adapt the inner skin to the lifetime of the sub-list just ended.
     if (innerSkin <= 0 || innerSkin > skin)
-        innerSkin = skin;
+        innerSkin = skin / 4; // first guess
     else if (activeAge_ < 8)
         innerSkin = std::min(2 * innerSkin, skin);
-    else if (activeAge_ > 256)
+    else if (activeAge_ > 128)
         innerSkin = std::max(0.5 * innerSkin, skin / 16);
     activeAge_ = 0;
     activeStale_ = false;
