@@ -16,6 +16,16 @@ std::pair<Real, Real> NeighborList::largestMotion2(const ParticleStore& particle
     const Vec3* const built = positionAtBuild_.data();
     const Vec3* const activeBuilt = active ? positionAtActiveBuild_.data() : built;
     const int chunks = std::min(loopThreads(n), 64);
+    if (chunks == 1)
+    {
+        Real a = 0, b = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            a = std::max(a, lengthSquared(x[i] - built[i]));
+            b = std::max(b, lengthSquared(x[i] - activeBuilt[i]));
+        }
+        return {a, b};
+    }
     Real full[64], sub[64];
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)

@@ -94,6 +94,16 @@ void finishParticles(World& world, Real dt)
     ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     const int chunks = std::min(loopThreads(n), 64);
+    if (chunks == 1) // small worlds (one ball on a turntable): no per-chunk bookkeeping
+    {
+        addCrossBlockForces(world, 0, n);
+        const ContactHealth walls = computeWallForces(world, dt, 0, n);
+        mergeWallHealth(world.health, &walls, 1);
+        world.health.finite = kick(p, world.gravity, dt, 0, n);
+        if (!world.health.finite)
+            recordFirstNonFinite(p, world.health);
+        return;
+    }
     ContactHealth walls[64];
     bool finite[64];
     parallelChunks(n, chunks,
