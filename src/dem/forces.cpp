@@ -238,14 +238,27 @@ constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of every wi
 struct PairBatch
 {
     alignas(64) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
-    alignas(64) double dvx[kBatch], dvy[kBatch], dvz[kBatch];
-    alignas(64) double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
-    alignas(64) double effectiveMass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
     // per-lane pair parameters (filled only if there is more than one material pair)
     alignas(64) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
         mu[kBatch];
     std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
+
+/// Lanes l = a[index[l]].*field (element loads and inserts, no staging through memory).
+template <class V> VERIDEM_HOT_INLINE V gather(const Vec3* a, const std::uint32_t* index, double Vec3::*field)
+{
+    if constexpr (kWidth<V> == 4)
+        return V{a[index[0]].*field, a[index[1]].*field, a[index[2]].*field, a[index[3]].*field};
+    else
+        return V{a[index[0]].*field, a[index[1]].*field};
+}
+template <class V> VERIDEM_HOT_INLINE V gather(const double* a, const std::uint32_t* index)
+{
+    if constexpr (kWidth<V> == 4)
+        return V{a[index[0]], a[index[1]], a[index[2]], a[index[3]]};
+    else
+        return V{a[index[0]], a[index[1]]};
+}
 
 /// A pair parameter in lanes: broadcast if there is one material pair, else per lane.
 template <class V>
@@ -292,25 +305,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     const Vec3* const velocity = p.velocity.data();
     const Vec3* const angularVelocity = p.angularVelocity.data();
     const Real* const slotMass = list.effectiveMass.data();
-    for (std::size_t m = 0; m < padded; ++m)
-    {
-        const std::uint32_t k = b.slot[m], i = b.i[m], j = b.j[m];
-        const Vec3 &vi = velocity[i], &vj = velocity[j];
-        const Vec3 &wi = angularVelocity[i], &wj = angularVelocity[j], &h = sink.spring[k];
-        b.dvx[m] = vi.x - vj.x;
-        b.dvy[m] = vi.y - vj.y;
-        b.dvz[m] = vi.z - vj.z;
-        b.wix[m] = wi.x;
-        b.wiy[m] = wi.y;
-        b.wiz[m] = wi.z;
-        b.wjx[m] = wj.x;
-        b.wjy[m] = wj.y;
-        b.wjz[m] = wj.z;
-        b.effectiveMass[m] = slotMass[k]; // m_i m_j / (m_i + m_j), per slot
-        b.hx[m] = h.x;
-        b.hy[m] = h.y;
-        b.hz[m] = h.z;
-    }
+    (void)list;
     if (!uniform)
         for (std::size_t m = 0; m < padded; ++m)
         {
@@ -340,13 +335,21 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes overlap = touching - distance;
         const Lanes share = distance / touching;
         const Lanes leverI = ri * share, leverJ = rj * share;
-        const Lanes ax = load<Lanes>(b.wix + m) * leverI + load<Lanes>(b.wjx + m) * leverJ;
-        const Lanes ay = load<Lanes>(b.wiy + m) * leverI + load<Lanes>(b.wjy + m) * leverJ;
-        const Lanes az = load<Lanes>(b.wiz + m) * leverI + load<Lanes>(b.wjz + m) * leverJ;
-        const Lanes rvx = load<Lanes>(b.dvx + m) - (ay * nz - az * ny);
-        const Lanes rvy = load<Lanes>(b.dvy + m) - (az * nx - ax * nz);
-        const Lanes rvz = load<Lanes>(b.dvz + m) - (ax * ny - ay * nx);
-        const Lanes effectiveMass = load<Lanes>(b.effectiveMass + m);
+        // Particle and slot data straight into lanes (element loads and inserts).
+        const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
+        const Lanes ax = gather<Lanes>(angularVelocity, laneI, &Vec3::x) * leverI +
+                         gather<Lanes>(angularVelocity, laneJ, &Vec3::x) * leverJ;
+        const Lanes ay = gather<Lanes>(angularVelocity, laneI, &Vec3::y) * leverI +
+                         gather<Lanes>(angularVelocity, laneJ, &Vec3::y) * leverJ;
+        const Lanes az = gather<Lanes>(angularVelocity, laneI, &Vec3::z) * leverI +
+                         gather<Lanes>(angularVelocity, laneJ, &Vec3::z) * leverJ;
+        const Lanes dvx = gather<Lanes>(velocity, laneI, &Vec3::x) - gather<Lanes>(velocity, laneJ, &Vec3::x);
+        const Lanes dvy = gather<Lanes>(velocity, laneI, &Vec3::y) - gather<Lanes>(velocity, laneJ, &Vec3::y);
+        const Lanes dvz = gather<Lanes>(velocity, laneI, &Vec3::z) - gather<Lanes>(velocity, laneJ, &Vec3::z);
+        const Lanes rvx = dvx - (ay * nz - az * ny);
+        const Lanes rvy = dvy - (az * nx - ax * nz);
+        const Lanes rvz = dvz - (ax * ny - ay * nx);
+        const Lanes effectiveMass = gather<Lanes>(slotMass, laneK); // m_i m_j / (m_i + m_j), per slot
 
         // contactCoefficients(), linear branch.
         const Lanes kn = parameter<Lanes>(uniform, &PairParams::kn, b.kn, m);
@@ -381,7 +384,9 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
 
         // 2. coulombSpringForce().
         const Lanes vtx = rvx - normalSpeed * nx, vty = rvy - normalSpeed * ny, vtz = rvz - normalSpeed * nz;
-        const Lanes hx = load<Lanes>(b.hx + m), hy = load<Lanes>(b.hy + m), hz = load<Lanes>(b.hz + m);
+        const Lanes hx = gather<Lanes>(sink.spring, laneK, &Vec3::x),
+                    hy = gather<Lanes>(sink.spring, laneK, &Vec3::y),
+                    hz = gather<Lanes>(sink.spring, laneK, &Vec3::z);
         const Lanes oldLength2 = hx * hx + hy * hy + hz * hz;
         const Lanes along = hx * nx + hy * ny + hz * nz;
         const Lanes qx = hx - along * nx, qy = hy - along * ny, qz = hz - along * nz;
