@@ -233,11 +233,10 @@ bool batchable(const PairParams& params)
 
 constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of every width); ~20 KB, in L1
 
-/// Per-batch lanes: inputs are gathered here with scalar stores, read back as vectors long after
-/// (a vector load right after scalar stores to the same bytes misses store forwarding).
+/// A batch of touching contacts: their slots and particles (the kernel loads the rest straight
+/// into lanes), and per-lane pair parameters when there is more than one material pair.
 struct PairBatch
 {
-    alignas(64) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
     // per-lane pair parameters (filled only if there is more than one material pair)
     alignas(64) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
         mu[kBatch];
@@ -276,8 +275,8 @@ struct ChunkHealth
     std::size_t touching;
 };
 
-/// Evaluates the touching contacts in lanes [0, count) of `b` (count <= kBatch; slot, i, j and the
-/// separation and radii already collected by the caller; the law batchable) and adds them into
+/// Evaluates the touching contacts [0, count) of `b` (count <= kBatch; slot, i and j collected by
+/// the caller; the law batchable) and adds them into
 /// the sink in lane order, exactly as the scalar path does. `uniform`: the pair parameters if
 /// there is a single material pair (no table look-up), else null.
 template <class Lanes>
@@ -296,16 +295,12 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         b.slot[m] = b.slot[count - 1];
         b.i[m] = b.i[count - 1];
         b.j[m] = b.j[count - 1];
-        b.sx[m] = b.sx[count - 1];
-        b.sy[m] = b.sy[count - 1];
-        b.sz[m] = b.sz[count - 1];
-        b.ri[m] = b.ri[count - 1];
-        b.rj[m] = b.rj[count - 1];
     }
+    const Vec3* const position = p.position.data();
     const Vec3* const velocity = p.velocity.data();
     const Vec3* const angularVelocity = p.angularVelocity.data();
+    const Real* const radius = p.radius.data();
     const Real* const slotMass = list.effectiveMass.data();
-    (void)list;
     if (!uniform)
         for (std::size_t m = 0; m < padded; ++m)
         {
@@ -322,8 +317,11 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         // Geometry (as pairContactScalar).
-        const Lanes sx = load<Lanes>(b.sx + m), sy = load<Lanes>(b.sy + m), sz = load<Lanes>(b.sz + m);
-        const Lanes ri = load<Lanes>(b.ri + m), rj = load<Lanes>(b.rj + m);
+        const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
+        const Lanes sx = gather<Lanes>(position, laneI, &Vec3::x) - gather<Lanes>(position, laneJ, &Vec3::x);
+        const Lanes sy = gather<Lanes>(position, laneI, &Vec3::y) - gather<Lanes>(position, laneJ, &Vec3::y);
+        const Lanes sz = gather<Lanes>(position, laneI, &Vec3::z) - gather<Lanes>(position, laneJ, &Vec3::z);
+        const Lanes ri = gather<Lanes>(radius, laneI), rj = gather<Lanes>(radius, laneJ);
         const Lanes touching = ri + rj;
         const Lanes distance2 = sx * sx + sy * sy + sz * sz;
         const Lanes distance = laneSqrt(distance2);
@@ -336,7 +334,6 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes share = distance / touching;
         const Lanes leverI = ri * share, leverJ = rj * share;
         // Particle and slot data straight into lanes (element loads and inserts).
-        const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
         const Lanes ax = gather<Lanes>(angularVelocity, laneI, &Vec3::x) * leverI +
                          gather<Lanes>(angularVelocity, laneJ, &Vec3::x) * leverJ;
         const Lanes ay = gather<Lanes>(angularVelocity, laneI, &Vec3::y) * leverI +
@@ -643,8 +640,8 @@ void computePairForces(World& world, Real dt)
                 health[chunk] = {worst, touchingCount};
                 return;
             }
-            // One pass: each touching slot is appended (branch-free) to a batch of lanes with its
-            // separation and radii, and the batch runs when full.
+            // One pass: each touching slot is appended (branch-free) to a batch, which runs when
+            // full.
             PairBatch batch;
             std::size_t m = 0;
             for (std::size_t a = begin; a < end; ++a)
@@ -658,11 +655,6 @@ void computePairForces(World& world, Real dt)
                 batch.slot[m] = k;
                 batch.i[m] = i;
                 batch.j[m] = j;
-                batch.sx[m] = sx;
-                batch.sy[m] = sy;
-                batch.sz[m] = sz;
-                batch.ri[m] = ri;
-                batch.rj[m] = rj;
                 m += isTouching;
                 // One well-predicted branch: a slot opens rarely (`&&` would branch on isTouching,
                 // which is close to random).
