@@ -262,6 +262,11 @@ int main(int argc, char** argv)
                     world.neighbors.size(),
                     static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
+        std::printf("  cross-block slots %zu (%.1f %% of slots; blocks of %u particles)\n",
+                    world.neighbors.deferredForce.size(),
+                    100.0 * static_cast<double>(world.neighbors.deferredForce.size()) /
+                        static_cast<double>(std::max<std::size_t>(world.neighbors.size(), 1)),
+                    NeighborList::kBlockParticles);
         std::printf("  touching candidates %zu (%.2f per particle, inner skin %.3g m), rebuilt %zu times\n",
                     world.neighbors.activeSlots.size(),
                     static_cast<double>(world.neighbors.activeSlots.size()) / static_cast<double>(n),
