@@ -107,8 +107,8 @@ void finishParticles(World& world, Real dt)
             recordFirstNonFinite(p, world.health);
         return;
     }
-    ContactHealth walls[64];
-    bool finite[64];
+    ContactHealth walls[64]{}; // (zeroed: GCC cannot see that chunks <= 64 entries are written)
+    bool finite[64]{};
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
                    {
