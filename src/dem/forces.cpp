@@ -118,19 +118,6 @@ struct PairSink
             deferredTorque[d] = tj;
         }
     }
-
-    /// Slot k is open: its history is forgotten and a deferred entry contributes nothing.
-    void open(NeighborList& list, std::size_t k) const
-    {
-        list.setHistory(k, ContactHistory{});
-        const std::uint32_t d = deferredIndex[k];
-        if (d != NeighborList::kInBlock)
-        {
-            deferredForce[d] = Vec3{};
-            deferredTorque[d] = Vec3{};
-        }
-        mayBeActive[k] = 0;
-    }
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -635,7 +622,7 @@ void computePairForces(World& world, Real dt)
                         ++touchingCount;
                     }
                     else if (sink.mayBeActive[k])
-                        sink.open(list, k);
+                        list.openSlot(k);
                 }
                 health[chunk] = {worst, touchingCount};
                 return;
@@ -659,7 +646,7 @@ void computePairForces(World& world, Real dt)
                 // One well-predicted branch: a slot opens rarely (`&&` would branch on isTouching,
                 // which is close to random).
                 if (__builtin_expect(sink.mayBeActive[k] & static_cast<std::uint8_t>(!isTouching), 0))
-                    sink.open(list, k);
+                    list.openSlot(k);
                 if (m == kBatch)
                 {
                     kernel(world, sink, dt, m, worst, batch, uniform);

@@ -86,16 +86,7 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
         if (lengthSquared(x[i] - x[j]) < reach * reach)
             activeSlots.push_back(static_cast<std::uint32_t>(k));
         else if (mayBeActive[k])
-        {
-            // Left out, so not touching: the contact opened (or never closed).
-            setHistory(k, ContactHistory{});
-            if (deferredIndex[k] != kInBlock)
-            {
-                deferredForce[deferredIndex[k]] = Vec3{};
-                deferredTorque[deferredIndex[k]] = Vec3{};
-            }
-            mayBeActive[k] = 0;
-        }
+            openSlot(k); // left out, so not touching: the contact opened (or never closed)
     }
 }
 

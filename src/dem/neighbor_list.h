@@ -111,6 +111,18 @@ class NeighborList
             rollingSpring[k] = h.rollingSpring;
     }
 
+    /// Slot k is found open: its history is forgotten, its deferred entry (if any) zeroed.
+    void openSlot(std::size_t k)
+    {
+        setHistory(k, ContactHistory{});
+        if (deferredIndex[k] != kInBlock)
+        {
+            deferredForce[deferredIndex[k]] = Vec3{};
+            deferredTorque[deferredIndex[k]] = Vec3{};
+        }
+        mayBeActive[k] = 0;
+    }
+
     std::size_t size() const { return first.size(); }
     std::size_t rebuildCount() const { return rebuilds_; }
     std::size_t activeRebuildCount() const { return activeRebuilds_; }
