@@ -35,23 +35,27 @@ namespace
 
 constexpr int kMaxChunks = 64;
 
-struct WorstOverlap // trivial on purpose: per-chunk arrays of it are not cleared every step
+struct WorstOverlap // the running largest overlap of a chunk's contacts
 {
     Real ratio;
     std::uint32_t particle;
     bool found;
 };
 
-/// Folds per-chunk records into health in chunk order (strictly greater wins: the first slot
-/// with the largest ratio, as a serial loop would find).
-void combine(StepHealth& health, const WorstOverlap* worst, int chunks)
+/// Folds per-chunk health into world health in chunk order (strictly greater wins: the first slot
+/// with the largest ratio, as a serial loop would find); sets `touching` to the chunks' total.
+void foldHealth(StepHealth& health, const ContactHealth* chunk, int chunks, std::size_t& touching)
 {
+    touching = 0;
     for (int c = 0; c < chunks; ++c)
-        if (worst[c].found && worst[c].ratio > health.maxOverlapRatio)
+    {
+        touching += chunk[c].touching;
+        if (chunk[c].found && chunk[c].maxOverlapRatio > health.maxOverlapRatio)
         {
-            health.maxOverlapRatio = worst[c].ratio;
-            health.worstParticle = worst[c].particle;
+            health.maxOverlapRatio = chunk[c].maxOverlapRatio;
+            health.worstParticle = chunk[c].worstParticle;
         }
+    }
 }
 
 /// What the contact law reads beyond the linear normal and tangential model.
@@ -253,14 +257,6 @@ VERIDEM_HOT_INLINE V parameter(const PairParams* uniform, double PairParams::*fi
 {
     return uniform ? broadcast<V>(uniform->*field) : load<V>(perLane + m);
 }
-
-/// Per-chunk health: the largest overlap ratio (first slot in order wins ties) and the number of
-/// touching contacts. Trivial on purpose: per-chunk arrays of it are not cleared every step.
-struct ChunkHealth
-{
-    WorstOverlap worst;
-    std::size_t touching;
-};
 
 /// Evaluates the touching contacts [0, count) of `b` (count <= kBatch; slot, i and j collected by
 /// the caller; the law batchable) and adds them into
@@ -592,7 +588,7 @@ void computePairForces(World& world, Real dt)
 
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
-    ChunkHealth health[kMaxChunks];
+    ContactHealth health[kMaxChunks];
     parallelChunks(
         static_cast<std::size_t>(chunks), chunks,
         [&](int chunk, std::size_t, std::size_t)
@@ -624,7 +620,7 @@ void computePairForces(World& world, Real dt)
                     else if (sink.mayBeActive[k])
                         list.openSlot(k);
                 }
-                health[chunk] = {worst, touchingCount};
+                health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
                 return;
             }
             // One pass: each touching slot is appended (branch-free) to a batch, which runs when
@@ -657,15 +653,9 @@ void computePairForces(World& world, Real dt)
             if (m > 0)
                 kernel(world, sink, dt, m, worst, batch, uniform);
             touchingCount += m;
-            health[chunk] = {worst, touchingCount};
+            health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
         });
-    WorstOverlap worst[kMaxChunks];
-    for (int c = 0; c < chunks; ++c)
-    {
-        worst[c] = health[c].worst;
-        world.health.touchingPairs += health[c].touching;
-    }
-    combine(world.health, worst, chunks);
+    foldHealth(world.health, health, chunks, world.health.touchingPairs);
 }
 
 const char* laneKernelName()
@@ -764,16 +754,7 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
 
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks)
 {
-    health.touchingWalls = 0;
-    for (int c = 0; c < chunks; ++c)
-    {
-        health.touchingWalls += chunk[c].touching;
-        if (chunk[c].found && chunk[c].maxOverlapRatio > health.maxOverlapRatio)
-        {
-            health.maxOverlapRatio = chunk[c].maxOverlapRatio;
-            health.worstParticle = chunk[c].worstParticle;
-        }
-    }
+    foldHealth(health, chunk, chunks, health.touchingWalls);
 }
 
 void computeForces(World& world, Real dt)
