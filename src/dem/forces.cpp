@@ -482,6 +482,63 @@ void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std
     pairContactsLanes<Lanes2>(world, sink, dt, count, worst, b, uniform);
 }
 
+/// A batch of touching wall contacts for the lane law: the contact inputs as the scalar path
+/// computes them (wallContactInput), one array per component, and the law's outputs.
+struct WallBatch
+{
+    LaneParams law;
+    alignas(32) double nx[kBatch], ny[kBatch], nz[kBatch], overlap[kBatch], rvx[kBatch], rvy[kBatch],
+        rvz[kBatch], mass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    alignas(32) double normalForce[kBatch], ftx[kBatch], fty[kBatch], ftz[kBatch], springX[kBatch],
+        springY[kBatch], springZ[kBatch];
+    std::uint32_t slot[kBatch], particle[kBatch];
+};
+
+/// The contact law of the wall contacts [0, count) of `b` in lanes (the walls' partner is of
+/// infinite mass, so m* = m; the same law and bits as evaluateContact).
+template <class Lanes>
+VERIDEM_HOT_INLINE void wallContactsLanes(WallBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+{
+    constexpr std::size_t kLanes = kWidth<Lanes>;
+    const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
+    for (std::size_t m = count; m < padded; ++m) // padding lanes repeat the last contact
+    {
+        for (double* a : {b.nx, b.ny, b.nz, b.overlap, b.rvx, b.rvy, b.rvz, b.mass, b.hx, b.hy, b.hz})
+            a[m] = a[count - 1];
+        if (!uniform)
+            for (double* a : {b.law.kn, b.law.ktRatio, b.law.rate, b.law.fromRatio, b.law.etaRatio, b.law.mu})
+                a[m] = a[count - 1];
+    }
+    for (std::size_t m = 0; m < padded; m += kLanes)
+    {
+        const LaneLaw<Lanes> out =
+            linearLawLanes<Lanes>(uniform, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m),
+                                  load<Lanes>(b.nz + m), load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m),
+                                  load<Lanes>(b.rvy + m), load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m),
+                                  load<Lanes>(b.hx + m), load<Lanes>(b.hy + m), load<Lanes>(b.hz + m));
+        store(b.normalForce + m, out.normalForce);
+        store(b.ftx + m, out.ftx);
+        store(b.fty + m, out.fty);
+        store(b.ftz + m, out.ftz);
+        store(b.springX + m, out.springX);
+        store(b.springY + m, out.springY);
+        store(b.springZ + m, out.springZ);
+    }
+}
+
+[[gnu::target("arch=x86-64-v3")]] void wallContactsAvx2(WallBatch& b, std::size_t count, Real dt,
+                                                        const PairParams* uniform)
+{
+    wallContactsLanes<Lanes4>(b, count, dt, uniform);
+}
+
+void wallContactsPortable(WallBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+{
+    wallContactsLanes<Lanes2>(b, count, dt, uniform);
+}
+
+using WallKernel = void (*)(WallBatch&, std::size_t, Real, const PairParams*);
+
 using PairKernel = void (*)(const World&, const PairSink&, Real, std::size_t, WorstOverlap&, PairBatch&,
                             const PairParams*);
 
@@ -489,6 +546,7 @@ struct KernelVariant
 {
     const char* name;
     PairKernel kernel;
+    WallKernel wallKernel;
     bool (*supported)();
 };
 
@@ -502,8 +560,9 @@ bool cpuHasAvx2()
 #endif
 }
 
-const KernelVariant kVariants[] = {{"avx2", pairContactsAvx2, cpuHasAvx2},
-                                   {"portable", pairContactsPortable, [] { return true; }}};
+const KernelVariant kVariants[] = {
+    {"avx2", pairContactsAvx2, wallContactsAvx2, cpuHasAvx2},
+    {"portable", pairContactsPortable, wallContactsPortable, [] { return true; }}};
 
 /// The variant in use: VERIDEM_KERNEL if set (and supported), else the widest the CPU runs.
 const KernelVariant*& currentVariant()
@@ -518,6 +577,17 @@ const KernelVariant*& currentVariant()
                          ": not a contact kernel this CPU can run (avx2, portable)");
     }();
     return variant;
+}
+
+/// True if every contact takes the lane path: the lane kernel is enabled and every material pair
+/// (walls included) is batchable.
+bool lanesApply(const World& world)
+{
+    bool all = world.batchedContactKernel;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            all = all && batchable(world.pairs(a, b));
+    return all;
 }
 
 /// One touching contact through the general contact law (any model), added into the sink.
@@ -585,10 +655,7 @@ void computePairForces(World& world, Real dt)
         std::fill(list.torqueSum.begin(), list.torqueSum.end(), NeighborList::Sum{});
         return;
     }
-    bool allBatchable = world.batchedContactKernel;
-    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
-        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
-            allBatchable = allBatchable && batchable(world.pairs(a, b));
+    const bool allBatchable = lanesApply(world);
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
 
     // Chunks: contiguous ranges of whole blocks, one per thread, balanced by slot count.
@@ -742,6 +809,110 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
     }
 }
 
+namespace
+{
+
+/// The contact input of particle i touching `wall` (gap from wallGap), as the contact law takes
+/// it; `arm` is set to the lever arm from the centre to the contact point [m].
+ContactInput wallContactInput(const ParticleStore& p, const Wall& wall, std::uint32_t i, const WallGap& gap,
+                              Real dt, Vec3& arm)
+{
+    const Real r = p.radius[i];
+    const Vec3 position = p.position[i], velocity = p.velocity[i], angularVelocity = p.angularVelocity[i];
+    ContactInput in;
+    in.normal = gap.normal;
+    in.overlap = gap.overlap;
+    arm = -r * gap.normal; // centre to contact point
+    // The particle's velocities are those of the half step t+dt/2, so the wall's surface
+    // velocity is taken at the contact point of the half step too (x - v dt/2). Using x(t+dt)
+    // would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball orbiting on a
+    // turntable would lose speed at a rate of order Omega v dt.
+    const Vec3 midStepContactPoint = position - (0.5 * dt) * velocity + arm;
+    in.relativeVelocity =
+        velocity + cross(angularVelocity, arm) - wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
+    in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
+    in.effectiveMass = p.mass[i];
+    in.effectiveRadius = gap.effectiveRadius;
+    in.spinInertia = 1.0 / p.invInertia[i];
+    return in;
+}
+
+/// Adds one wall contact's force and torque to particle i and folds its overlap into `health`.
+void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const Vec3& torque, Real overlap,
+                    ContactHealth& health)
+{
+    p.force[i] += force;
+    p.torque[i] += torque;
+    const Real ratio = overlap / p.radius[i];
+    if (ratio > health.maxOverlapRatio)
+        health = {ratio, i, true, health.touching};
+}
+
+/// computeWallForces when every contact takes the lane law: the inputs are computed per contact
+/// (wallContactInput), the law runs in lanes a batch at a time, and the results are added in
+/// slot order, so the sums and bits are those of the scalar path.
+ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::size_t end)
+{
+    ParticleStore& p = world.particles;
+    WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
+    const WallKernel kernel = currentVariant()->wallKernel;
+    WallBatch b;
+    std::size_t m = 0;
+    const auto run = [&]
+    {
+        kernel(b, m, dt, uniform);
+        for (std::size_t q = 0; q < m; ++q)
+        {
+            const std::uint32_t i = b.particle[q];
+            const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
+            list.setHistory(b.slot[q], ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, Vec3{}});
+            const Vec3 arm = -p.radius[i] * normal;
+            addWallContact(p, i, b.normalForce[q] * normal + tangential, Vec3{} + cross(arm, tangential),
+                           b.overlap[q], health);
+        }
+        m = 0;
+    };
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = list.particle[k];
+        const Wall& wall = world.walls[list.wall[k]];
+        const WallGap gap = wallGap(wall, p.position[i], p.radius[i]);
+        if (!gap.touching)
+        {
+            list.setHistory(k, ContactHistory{});
+            continue;
+        }
+        ++health.touching;
+        Vec3 arm;
+        const ContactInput in = wallContactInput(p, wall, i, gap, dt, arm);
+        const Vec3 spring = list.tangentialSpring[k];
+        b.slot[m] = static_cast<std::uint32_t>(k);
+        b.particle[m] = i;
+        b.nx[m] = in.normal.x;
+        b.ny[m] = in.normal.y;
+        b.nz[m] = in.normal.z;
+        b.overlap[m] = in.overlap;
+        b.rvx[m] = in.relativeVelocity.x;
+        b.rvy[m] = in.relativeVelocity.y;
+        b.rvz[m] = in.relativeVelocity.z;
+        b.mass[m] = in.effectiveMass;
+        b.hx[m] = spring.x;
+        b.hy[m] = spring.y;
+        b.hz[m] = spring.z;
+        if (!uniform)
+            b.law.set(m, world.pairs(p.material[i], wall.material));
+        if (++m == kBatch)
+            run();
+    }
+    if (m > 0)
+        run();
+    return health;
+}
+
+} // namespace
+
 ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
@@ -749,13 +920,14 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     ContactHealth health{0, 0, false, 0};
     if (list.size() == 0 || list.start.size() != p.size() + 1)
         return health;
+    if (lanesApply(world))
+        return wallForcesInLanes(world, dt, begin, end);
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
         const std::uint32_t i = list.particle[k];
         const Wall& wall = world.walls[list.wall[k]];
         const Real r = p.radius[i];
-        const Vec3 position = p.position[i], velocity = p.velocity[i], angularVelocity = p.angularVelocity[i];
-        const WallGap gap = wallGap(wall, position, r);
+        const WallGap gap = wallGap(wall, p.position[i], r);
         if (!gap.touching)
         {
             list.setHistory(k, ContactHistory{});
@@ -763,33 +935,16 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
         }
         ++health.touching;
         const PairParams& params = world.pairs(p.material[i], wall.material);
-        ContactInput in;
-        in.normal = gap.normal;
-        in.overlap = gap.overlap;
-        const Vec3 arm = -r * gap.normal; // centre to contact point
-        // The particle's velocities are those of the half step t+dt/2, so the wall's surface
-        // velocity is taken at the contact point of the half step too (x - v dt/2). Using x(t+dt)
-        // would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball orbiting on a
-        // turntable would lose speed at a rate of order Omega v dt.
-        const Vec3 midStepContactPoint = position - (0.5 * dt) * velocity + arm;
-        in.relativeVelocity = velocity + cross(angularVelocity, arm) -
-                              wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
-        in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
-        in.effectiveMass = p.mass[i];
-        in.effectiveRadius = gap.effectiveRadius;
-        in.spinInertia = 1.0 / p.invInertia[i];
+        Vec3 arm;
+        ContactInput in = wallContactInput(p, wall, i, gap, dt, arm);
         if (params.rollingModel == RollingModel::Epsd)
             in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
 
         ContactHistory history = list.history(k);
         const ContactOutput out = evaluateContact(params, in, history, dt);
         list.setHistory(k, history);
-        p.force[i] += out.force;
-        p.torque[i] += out.rollingTorque + cross(arm, out.tangentialForce);
-
-        const Real ratio = in.overlap / r;
-        if (ratio > health.maxOverlapRatio)
-            health = {ratio, i, true, health.touching};
+        addWallContact(p, i, out.force, out.rollingTorque + cross(arm, out.tangentialForce), in.overlap,
+                       health);
     }
     return health;
 }
