@@ -40,6 +40,10 @@ struct WorstOverlap // the running largest overlap of a chunk's contacts
     Real ratio;
     std::uint32_t particle;
     bool found;
+
+    /// overlap / radius > ratio, without the division (radius > 0 [m]; overlap [m]); the division
+    /// is paid only when the worst contact changes, which is rare.
+    bool exceededBy(Real overlap, Real radius) const { return overlap > ratio * radius; }
 };
 
 /// Folds per-chunk health into world health in chunk order (strictly greater wins: the first slot
@@ -401,12 +405,13 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes distance2 = sx * sx + sy * sy + sz * sz;
         const Lanes distance = laneSqrt(distance2);
         const LaneMask positive = distance > zero;
-        const Lanes inverseDistance = one / distance;
+        const Lanes reciprocal = one / (distance * touching); // one division for 1/d and d/(r_i + r_j)
+        const Lanes inverseDistance = touching * reciprocal;
         const Lanes nx = positive ? sx * inverseDistance : zero;
         const Lanes ny = positive ? sy * inverseDistance : zero;
         const Lanes nz = positive ? sz * inverseDistance : one;
         const Lanes overlap = touching - distance;
-        const Lanes share = distance / touching;
+        const Lanes share = positive ? distance * distance * reciprocal : zero;
         const Lanes leverI = ri * share, leverJ = rj * share;
         // Particle and slot data straight into lanes (element loads and inserts).
         const Lanes ax = gather<Lanes>(angularVelocity, laneI, &Vec3::x) * leverI +
@@ -436,7 +441,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes tix = zero - leverI * ttx, tiy = zero - leverI * tty, tiz = zero - leverI * ttz;
         const Lanes tjx = negativeZero - leverJ * ttx, tjy = negativeZero - leverJ * tty,
                     tjz = negativeZero - leverJ * ttz;
-        const Lanes ratio = overlap / (rj < ri ? rj : ri);
+        const Lanes minRadius = rj < ri ? rj : ri;
 
         // Scatter, in lane (= slot) order: one (x, y, z, 0) vector per contact and sum.
         Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
@@ -463,8 +468,8 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
                 sink.deferredForce[d] = {-force[l][0], -force[l][1], -force[l][2]};
                 sink.deferredTorque[d] = {torqueJ[l][0], torqueJ[l][1], torqueJ[l][2]};
             }
-            if (ratio[l] > worst.ratio)
-                worst = {ratio[l], i, true};
+            if (worst.exceededBy(overlap[l], minRadius[l]))
+                worst = {overlap[l] / minRadius[l], i, true};
         }
     }
 }
@@ -604,13 +609,14 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     const PairParams& params = world.pairs(p.material[i], p.material[j]);
     const ExtraInputs extra = extraInputsFor(params);
     const Real distance = std::sqrt(distance2);
-    const Real inverseDistance = 1.0 / distance;
+    const Real reciprocal = 1.0 / (distance * touching); // one division for 1/d and d/(r_i + r_j)
+    const Real inverseDistance = touching * reciprocal;
     ContactInput in;
     in.normal = distance > 0 ? Vec3{separation.x * inverseDistance, separation.y * inverseDistance,
                                     separation.z * inverseDistance}
                              : Vec3{0, 0, 1};
     in.overlap = touching - distance;
-    const Real share = distance / touching;
+    const Real share = distance > 0 ? distance * distance * reciprocal : 0.0;
     const Real leverI = ri * share, leverJ = rj * share;
     in.relativeVelocity = p.velocity[i] - p.velocity[j] -
                           cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
@@ -632,9 +638,9 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,
              -out.rollingTorque - leverJ * tangentialTorque);
 
-    const Real ratio = in.overlap / std::min(ri, rj);
-    if (ratio > worst.ratio)
-        worst = {ratio, i, true};
+    const Real minRadius = std::min(ri, rj);
+    if (worst.exceededBy(in.overlap, minRadius))
+        worst = {in.overlap / minRadius, i, true};
 }
 
 } // namespace
