@@ -269,6 +269,28 @@ template <class V> VERIDEM_HOT_INLINE V gather(const double* a, const std::uint3
         return V{a[index[0]], a[index[1]]};
 }
 
+/// The three components of a[index[l]] in lanes. Four lanes: (x, y) of each vector with one
+/// 16-byte load, two of them joined per register and split by unpacking (4 shuffles for x and y
+/// instead of 6 with element inserts: the shuffle port bounds the four-lane kernel on Zen 3).
+template <class V> struct Lanes3
+{
+    V x, y, z;
+};
+template <class V> VERIDEM_HOT_INLINE Lanes3<V> gatherVec3(const Vec3* a, const std::uint32_t* index)
+{
+    if constexpr (kWidth<V> == 4)
+    {
+        const Lanes2 xy0 = load<Lanes2>(&a[index[0]].x), xy1 = load<Lanes2>(&a[index[1]].x),
+                     xy2 = load<Lanes2>(&a[index[2]].x), xy3 = load<Lanes2>(&a[index[3]].x);
+        const Lanes4 even = __builtin_shufflevector(xy0, xy2, 0, 1, 2, 3); // x0 y0 x2 y2
+        const Lanes4 odd = __builtin_shufflevector(xy1, xy3, 0, 1, 2, 3);  // x1 y1 x3 y3
+        return {__builtin_shuffle(even, odd, Index4{0, 4, 2, 6}), __builtin_shuffle(even, odd, Index4{1, 5, 3, 7}),
+                gather<V>(a, index, &Vec3::z)};
+    }
+    else
+        return {gather<V>(a, index, &Vec3::x), gather<V>(a, index, &Vec3::y), gather<V>(a, index, &Vec3::z)};
+}
+
 /// A pair parameter in lanes: broadcast if there is one material pair, else per lane.
 template <class V>
 VERIDEM_HOT_INLINE V parameter(const PairParams* uniform, double PairParams::*field, const double* perLane,
@@ -397,9 +419,8 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     {
         // Geometry (as pairContactScalar).
         const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
-        const Lanes sx = gather<Lanes>(position, laneI, &Vec3::x) - gather<Lanes>(position, laneJ, &Vec3::x);
-        const Lanes sy = gather<Lanes>(position, laneI, &Vec3::y) - gather<Lanes>(position, laneJ, &Vec3::y);
-        const Lanes sz = gather<Lanes>(position, laneI, &Vec3::z) - gather<Lanes>(position, laneJ, &Vec3::z);
+        const Lanes3<Lanes> xi = gatherVec3<Lanes>(position, laneI), xj = gatherVec3<Lanes>(position, laneJ);
+        const Lanes sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
         const Lanes ri = gather<Lanes>(radius, laneI), rj = gather<Lanes>(radius, laneJ);
         const Lanes touching = ri + rj;
         const Lanes distance2 = sx * sx + sy * sy + sz * sz;
@@ -414,23 +435,20 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes share = positive ? distance * distance * reciprocal : zero;
         const Lanes leverI = ri * share, leverJ = rj * share;
         // Particle and slot data straight into lanes (element loads and inserts).
-        const Lanes ax = gather<Lanes>(angularVelocity, laneI, &Vec3::x) * leverI +
-                         gather<Lanes>(angularVelocity, laneJ, &Vec3::x) * leverJ;
-        const Lanes ay = gather<Lanes>(angularVelocity, laneI, &Vec3::y) * leverI +
-                         gather<Lanes>(angularVelocity, laneJ, &Vec3::y) * leverJ;
-        const Lanes az = gather<Lanes>(angularVelocity, laneI, &Vec3::z) * leverI +
-                         gather<Lanes>(angularVelocity, laneJ, &Vec3::z) * leverJ;
-        const Lanes dvx = gather<Lanes>(velocity, laneI, &Vec3::x) - gather<Lanes>(velocity, laneJ, &Vec3::x);
-        const Lanes dvy = gather<Lanes>(velocity, laneI, &Vec3::y) - gather<Lanes>(velocity, laneJ, &Vec3::y);
-        const Lanes dvz = gather<Lanes>(velocity, laneI, &Vec3::z) - gather<Lanes>(velocity, laneJ, &Vec3::z);
+        const Lanes3<Lanes> wi = gatherVec3<Lanes>(angularVelocity, laneI),
+                            wj = gatherVec3<Lanes>(angularVelocity, laneJ);
+        const Lanes ax = wi.x * leverI + wj.x * leverJ;
+        const Lanes ay = wi.y * leverI + wj.y * leverJ;
+        const Lanes az = wi.z * leverI + wj.z * leverJ;
+        const Lanes3<Lanes> vi = gatherVec3<Lanes>(velocity, laneI), vj = gatherVec3<Lanes>(velocity, laneJ);
+        const Lanes dvx = vi.x - vj.x, dvy = vi.y - vj.y, dvz = vi.z - vj.z;
         const Lanes rvx = dvx - (ay * nz - az * ny);
         const Lanes rvy = dvy - (az * nx - ax * nz);
         const Lanes rvz = dvz - (ax * ny - ay * nx);
         const Lanes effectiveMass = gather<Lanes>(slotMass, laneK); // m_i m_j / (m_i + m_j), per slot
 
-        const Lanes hx = gather<Lanes>(sink.spring, laneK, &Vec3::x),
-                    hy = gather<Lanes>(sink.spring, laneK, &Vec3::y),
-                    hz = gather<Lanes>(sink.spring, laneK, &Vec3::z);
+        const Lanes3<Lanes> h = gatherVec3<Lanes>(sink.spring, laneK);
+        const Lanes hx = h.x, hy = h.y, hz = h.z;
         const LaneLaw<Lanes> out = linearLawLanes<Lanes>(uniform, b.law, m, dt, nx, ny, nz, overlap, rvx, rvy,
                                                          rvz, effectiveMass, hx, hy, hz);
         const Lanes normalForce = out.normalForce, ftx = out.ftx, fty = out.fty, ftz = out.ftz;
