@@ -227,7 +227,8 @@ bool batchable(const PairParams& params)
     return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
 }
 
-constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of every width); ~20 KB, in L1
+constexpr std::size_t kPrefetchAhead = 16; // candidates between a prefetch and its use
+constexpr std::size_t kBatch = 64;         // contacts per batch (a multiple of every width); ~20 KB, in L1
 
 /// A batch of touching contacts: their slots and particles (the kernel loads the rest straight
 /// into lanes), and per-lane pair parameters when there is more than one material pair.
@@ -728,6 +729,9 @@ void computePairForces(World& world, Real dt)
             const std::uint32_t* const first = list.first.data();
             const std::uint32_t* const second = list.second.data();
             const Vec3* const position = p.position.data();
+            const Vec3* const velocity = p.velocity.data();
+            const Vec3* const angularVelocity = p.angularVelocity.data();
+            const Vec3* const spring = sink.spring;
             const Real* const radius = p.radius.data();
             if (!allBatchable)
             {
@@ -754,15 +758,16 @@ void computePairForces(World& world, Real dt)
             {
                 const std::uint32_t k = active[a], i = first[k], j = second[k];
                 {
-                    // The partner of the candidate 16 ahead, into cache for this pass and the lane
-                    // kernel: j jumps across the Morton order (the neighbours above and below), and
-                    // on a 512 KB L2 its rows often come from L3 (+5 % on the settled bed, Zen 3).
-                    const std::size_t ahead = std::min(a + 16, end - 1);
-                    const std::uint32_t jAhead = second[active[ahead]];
+                    // The partner of the candidate kAhead on, into cache for this pass and the
+                    // lane kernel: j jumps across the Morton order (the neighbours above and
+                    // below), and on a 512 KB L2 its rows often come from L3 (+5 % on the settled
+                    // bed, Zen 3).
+                    const std::uint32_t kAhead = active[std::min(a + kPrefetchAhead, end - 1)];
+                    const std::uint32_t jAhead = second[kAhead];
                     __builtin_prefetch(&position[jAhead]);
-                    __builtin_prefetch(&p.velocity[jAhead]);
-                    __builtin_prefetch(&p.angularVelocity[jAhead]);
-                    __builtin_prefetch(&sink.spring[active[ahead]]);
+                    __builtin_prefetch(&velocity[jAhead]);
+                    __builtin_prefetch(&angularVelocity[jAhead]);
+                    __builtin_prefetch(&spring[kAhead]);
                 }
                 const Vec3 &xi = position[i], &xj = position[j];
                 const Real ri = radius[i], rj = radius[j];
