@@ -293,13 +293,33 @@ template <class V> VERIDEM_HOT_INLINE Lanes3<V> gatherVec3(const Vec3* a, const 
         return {gather<V>(a, index, &Vec3::x), gather<V>(a, index, &Vec3::y), gather<V>(a, index, &Vec3::z)};
 }
 
-/// A pair parameter in lanes: broadcast if there is one material pair, else per lane.
-template <class V>
-VERIDEM_HOT_INLINE V parameter(const PairParams* uniform, double PairParams::*field, const double* perLane,
-                               std::size_t m)
+/// The pair parameters in lanes: broadcast once per kernel call if there is one material pair
+/// (`uniform`), else loaded per lane from a LaneParams.
+template <class Lanes> struct LaneConstants
 {
-    return uniform ? broadcast<V>(uniform->*field) : load<V>(perLane + m);
-}
+    bool perLane;
+    Lanes kn, ktRatio, rate, fromRatio, etaRatio, mu;
+
+    [[gnu::always_inline]] explicit LaneConstants(const PairParams* uniform) : perLane(uniform == nullptr)
+    {
+        const Lanes zero = {};
+        kn = ktRatio = rate = fromRatio = etaRatio = mu = zero;
+        if (uniform)
+        {
+            kn = zero + uniform->kn;
+            ktRatio = zero + uniform->ktRatio;
+            rate = zero + uniform->dampingRate;
+            fromRatio = zero + 2.0 * uniform->dampingRatio;
+            etaRatio = zero + uniform->tangentialDampingRatio;
+            mu = zero + uniform->mu;
+        }
+    }
+    /// Lanes m .. m + width of a parameter (`field` here, `values` in a LaneParams).
+    VERIDEM_HOT_INLINE Lanes get(Lanes LaneConstants::*field, const double* values, std::size_t m) const
+    {
+        return perLane ? load<Lanes>(values + m) : this->*field;
+    }
+};
 
 /// What the contact law gives in lanes: signed normal force [N], tangential force [N], updated
 /// tangential spring [m].
@@ -313,7 +333,7 @@ template <class Lanes> struct LaneLaw
 /// of the scalar law in the same order. Inputs as ContactInput: unit normal n, overlap [m],
 /// relative contact velocity rv [m/s], effective mass [kg], stored spring h [m]; dt [s].
 template <class Lanes>
-VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const PairParams* uniform, const LaneParams& law,
+VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, const LaneParams& law,
                                                  std::size_t m, Real dt, Lanes nx, Lanes ny, Lanes nz,
                                                  Lanes overlap, Lanes rvx, Lanes rvy, Lanes rvz,
                                                  Lanes effectiveMass, Lanes hx, Lanes hy, Lanes hz)
@@ -321,18 +341,17 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const PairParams* uniform, cons
     using LaneMask = decltype(Lanes{} < Lanes{});
     const Lanes zero = {}, one = zero + 1.0;
     // contactCoefficients(), linear branch.
-    const Lanes kn = parameter<Lanes>(uniform, &PairParams::kn, law.kn, m);
-    const Lanes kt = parameter<Lanes>(uniform, &PairParams::ktRatio, law.ktRatio, m) * kn;
-    const Lanes rate = parameter<Lanes>(uniform, &PairParams::dampingRate, law.rate, m);
+    const Lanes kn = c.get(&LaneConstants<Lanes>::kn, law.kn, m);
+    const Lanes kt = c.get(&LaneConstants<Lanes>::ktRatio, law.ktRatio, m) * kn;
+    const Lanes rate = c.get(&LaneConstants<Lanes>::rate, law.rate, m);
     const LaneMask fromRate = rate >= zero;
     Lanes etaN = rate * effectiveMass;
     if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
     {
-        const Lanes fromRatio =
-            uniform ? broadcast<Lanes>(2.0 * uniform->dampingRatio) : load<Lanes>(law.fromRatio + m);
+        const Lanes fromRatio = c.get(&LaneConstants<Lanes>::fromRatio, law.fromRatio, m);
         etaN = fromRate ? etaN : fromRatio * laneSqrt(effectiveMass * kn);
     }
-    const Lanes etaT = parameter<Lanes>(uniform, &PairParams::tangentialDampingRatio, law.etaRatio, m) * etaN;
+    const Lanes etaT = c.get(&LaneConstants<Lanes>::etaRatio, law.etaRatio, m) * etaN;
 
     // evaluateContact(): 1. normal force.
     const Lanes normalSpeed = rvx * nx + rvy * ny + rvz * nz;
@@ -365,8 +384,7 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const PairParams* uniform, cons
     const Lanes springX = px + vtx * dt, springY = py + vty * dt, springZ = pz + vtz * dt;
     const Lanes trialX = -kt * springX - etaT * vtx, trialY = -kt * springY - etaT * vty,
                 trialZ = -kt * springZ - etaT * vtz;
-    const Lanes cap =
-        parameter<Lanes>(uniform, &PairParams::mu, law.mu, m) * (normalForce > zero ? normalForce : zero);
+    const Lanes cap = c.get(&LaneConstants<Lanes>::mu, law.mu, m) * (normalForce > zero ? normalForce : zero);
     const Lanes trialLength2 = trialX * trialX + trialY * trialY + trialZ * trialZ;
     const LaneMask sticks = trialLength2 <= cap * cap;
     Lanes ftx = trialX, fty = trialY, ftz = trialZ, newSpringX = springX, newSpringY = springY,
@@ -417,6 +435,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
             b.law.set(m, world.pairs(p.material[b.i[m]], p.material[b.j[m]]));
 
     const Lanes zero = {}, one = zero + 1.0, negativeZero = -zero;
+    const LaneConstants<Lanes> constants(uniform);
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         // Geometry (as pairContactScalar).
@@ -451,8 +470,8 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
 
         const Lanes3<Lanes> h = gatherVec3<Lanes>(sink.spring, laneK);
         const Lanes hx = h.x, hy = h.y, hz = h.z;
-        const LaneLaw<Lanes> out = linearLawLanes<Lanes>(uniform, b.law, m, dt, nx, ny, nz, overlap, rvx, rvy,
-                                                         rvz, effectiveMass, hx, hy, hz);
+        const LaneLaw<Lanes> out = linearLawLanes<Lanes>(constants, b.law, m, dt, nx, ny, nz, overlap, rvx,
+                                                         rvy, rvz, effectiveMass, hx, hy, hz);
         const Lanes normalForce = out.normalForce, ftx = out.ftx, fty = out.fty, ftz = out.ftz;
         const Lanes newSpringX = out.springX, newSpringY = out.springY, newSpringZ = out.springZ;
         const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
@@ -534,10 +553,11 @@ VERIDEM_HOT_INLINE void wallContactsLanes(WallBatch& b, std::size_t count, Real 
             for (double* a : {b.law.kn, b.law.ktRatio, b.law.rate, b.law.fromRatio, b.law.etaRatio, b.law.mu})
                 a[m] = a[count - 1];
     }
+    const LaneConstants<Lanes> constants(uniform);
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         const LaneLaw<Lanes> out =
-            linearLawLanes<Lanes>(uniform, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m),
+            linearLawLanes<Lanes>(constants, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m),
                                   load<Lanes>(b.nz + m), load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m),
                                   load<Lanes>(b.rvy + m), load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m),
                                   load<Lanes>(b.hx + m), load<Lanes>(b.hy + m), load<Lanes>(b.hz + m));
