@@ -142,6 +142,15 @@ struct PairSink
 // variant (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar
 // path.
 // ---------------------------------------------------------------------------------------------
+// The four-lane variant is compiled for x86-64-v3 (AVX2, FMA unused: -ffp-contract=off), unless
+// the whole build already targets a CPU that has it (VERIDEM_NATIVE): then the attribute would
+// be a narrower target than its callees' and GCC could not inline them.
+#if defined(__AVX2__) && defined(__FMA__) && defined(__BMI2__)
+#define VERIDEM_AVX2_TARGET
+#else
+#define VERIDEM_AVX2_TARGET [[gnu::target("arch=x86-64-v3")]]
+#endif
+
 using Lanes2 = double __attribute__((vector_size(16)));
 using Lanes4 = double __attribute__((vector_size(32)));
 using Index4 = long long __attribute__((vector_size(32)));
@@ -513,9 +522,9 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     }
 }
 
-[[gnu::target("arch=x86-64-v3")]] void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
-                                                        std::size_t count, WorstOverlap& worst, PairBatch& b,
-                                                        const PairParams* uniform)
+VERIDEM_AVX2_TARGET void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
+                                          std::size_t count, WorstOverlap& worst, PairBatch& b,
+                                          const PairParams* uniform)
 {
     pairContactsLanes<Lanes4>(world, sink, dt, count, worst, b, uniform);
 }
@@ -571,8 +580,7 @@ VERIDEM_HOT_INLINE void wallContactsLanes(WallBatch& b, std::size_t count, Real 
     }
 }
 
-[[gnu::target("arch=x86-64-v3")]] void wallContactsAvx2(WallBatch& b, std::size_t count, Real dt,
-                                                        const PairParams* uniform)
+VERIDEM_AVX2_TARGET void wallContactsAvx2(WallBatch& b, std::size_t count, Real dt, const PairParams* uniform)
 {
     wallContactsLanes<Lanes4>(b, count, dt, uniform);
 }
