@@ -872,8 +872,8 @@ namespace
 
 /// The contact input of particle i touching `wall` (gap from wallGap), as the contact law takes
 /// it; `arm` is set to the lever arm from the centre to the contact point [m].
-ContactInput wallContactInput(const ParticleStore& p, const Wall& wall, std::uint32_t i, const WallGap& gap,
-                              Real dt, Vec3& arm)
+VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleStore& p, const Wall& wall, std::uint32_t i,
+                                                 const WallGap& gap, Real dt, Vec3& arm)
 {
     const Real r = p.radius[i];
     const Vec3 position = p.position[i], velocity = p.velocity[i], angularVelocity = p.angularVelocity[i];
