@@ -57,8 +57,8 @@ echo "== one ball on a turntable, 3,000,000 steps"
 "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
 if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
   echo "== baseline build $VERIDEM_BASELINE_BENCH: bed 1 thread, then turntable; this build again"
-  "$VERIDEM_BASELINE_BENCH" --steps "$steps" | sed 's/^/   baseline /'
-  "$bench" --steps "$steps" --threads 1 | sed 's/^/   veridem /'
+  "$VERIDEM_BASELINE_BENCH" --steps "$steps" --file "$shared/settled_bed_20k.xyz" | sed 's/^/   baseline /'
+  "$bench" --steps "$steps" --threads 1 --file "$shared/settled_bed_20k.xyz" | sed 's/^/   veridem /'
   "$VERIDEM_BASELINE_BENCH" --scene turntable --steps 3000000 | sed 's/^/   baseline /'
   "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
 fi
