@@ -140,7 +140,7 @@ struct PairSink
 // path (pairContactScalar + evaluateContact) in the same order, branches become selects, and no
 // multiply-add is fused (-ffp-contract=off), so the bits are those of the scalar path on every
 // variant (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar
-// path.
+// path. The wall contacts of the same law use the same lane law (linearLawLanes, WallBatch).
 // ---------------------------------------------------------------------------------------------
 // The four-lane variant is compiled for x86-64-v3 (AVX2, FMA unused: -ffp-contract=off), unless
 // the whole build already targets a CPU that has it (VERIDEM_NATIVE): then the attribute would
@@ -258,6 +258,8 @@ struct LaneParams
     }
 };
 
+/// A batch of touching pair contacts: their slots and particles (the kernel loads the rest
+/// straight into lanes), and per-lane pair parameters when there is more than one material pair.
 struct PairBatch
 {
     LaneParams law;
@@ -367,7 +369,8 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, 
     const Lanes elastic = kn * overlap;
     const Lanes travel =
         reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(normalSpeed) & 0x7fffffffffffffffLL) * dt;
-    // Divisions and roots are the bottleneck: those of rare branches run only if a lane takes them.
+    // Divisions and roots share the bottleneck port with the shuffles (Zen 3): those of rare
+    // branches run only if a lane takes them.
     const LaneMask transition = overlap < travel;
     Lanes dashpotWeight = one;
     if (anyLane(transition))
@@ -464,7 +467,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes overlap = touching - distance;
         const Lanes share = positive ? distance * distance * reciprocal : zero;
         const Lanes leverI = ri * share, leverJ = rj * share;
-        // Particle and slot data straight into lanes (element loads and inserts).
+        // Particle and slot data straight into lanes (gatherVec3: paired 16-byte loads).
         const Lanes3<Lanes> wi = gatherVec3<Lanes>(angularVelocity, laneI),
                             wj = gatherVec3<Lanes>(angularVelocity, laneJ);
         const Lanes ax = wi.x * leverI + wj.x * leverJ;
