@@ -239,9 +239,7 @@ bool batchable(const PairParams& params)
 constexpr std::size_t kPrefetchAhead = 16; // candidates between a prefetch and its use
 constexpr std::size_t kBatch = 64;         // contacts per batch (a multiple of every width); ~20 KB, in L1
 
-/// A batch of touching contacts: their slots and particles (the kernel loads the rest straight
-/// into lanes), and per-lane pair parameters when there is more than one material pair.
-/// Pair parameters per lane (filled only if there is more than one material pair).
+/// Pair parameters per lane of a batch (filled only if there is more than one material pair).
 struct LaneParams
 {
     alignas(64) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
