@@ -8,6 +8,11 @@
 #
 # VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench also runs that build (e.g. an older commit)
 # on the bed (1 thread) and the turntable, for a before/after ratio in the same session.
+#
+# VERIDEM_ROUNDS=N runs, instead, N side-by-side rounds on the settled bed: veridem and LAMMPS back
+# to back on 1 thread/rank, then on 2, each round printing the ratio of its two adjacent runs (and
+# the baseline build against this one, if given). On a machine whose speed drifts by +-25 % within
+# minutes, the spread of these ratios is the honest uncertainty of "veridem / LAMMPS".
 # OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
 # default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
 # every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
@@ -32,6 +37,29 @@ rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
 }
 
 echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset} GOMP_SPINCOUNT=$GOMP_SPINCOUNT"
+
+if [ -n "${VERIDEM_ROUNDS:-}" ]; then
+  veridem_rate() { # bench binary, threads -> particle-steps/s of the whole run
+    "$1" --steps "$steps" --threads "$2" --file "$shared/settled_bed_20k.xyz" |
+      awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}'
+  }
+  ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
+  for r in $(seq "$VERIDEM_ROUNDS"); do
+    for n in 1 2; do
+      v=$(veridem_rate "$bench" "$n")
+      mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/bed.data" \
+        -var steps "$steps" -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
+      l=$(rate_of_loop "$work/lammps.log")
+      echo "round $r, bed, $n thread(s)/rank(s): veridem $v  LAMMPS $l  ratio $(ratio "$v" "$l")"
+    done
+    if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
+      b=$(veridem_rate "$VERIDEM_BASELINE_BENCH" 1)
+      v=$(veridem_rate "$bench" 1)
+      echo "round $r, bed, 1 thread: baseline $b  this build $v  ratio $(ratio "$v" "$b")"
+    fi
+  done
+  exit 0
+fi
 for scene in bed gas; do
   for n in 1 2; do
     echo "== $scene, $n thread(s)/rank(s), $steps steps"
