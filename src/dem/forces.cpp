@@ -193,10 +193,6 @@ template <class V> VERIDEM_HOT_INLINE void store(double* a, const V& v)
 {
     std::memcpy(a, &v, sizeof v);
 }
-template <class V> VERIDEM_HOT_INLINE V broadcast(double x)
-{
-    return V{} + x;
-}
 
 /// Four contacts' x, y, z lanes -> one (x, y, z, 0) vector per contact: unpacks within 128-bit
 /// halves, then half swaps (8 shuffles; interleaving across halves first costs 14).
@@ -479,9 +475,8 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes effectiveMass = gather<Lanes>(slotMass, laneK); // m_i m_j / (m_i + m_j), per slot
 
         const Lanes3<Lanes> h = gatherVec3<Lanes>(sink.spring, laneK);
-        const Lanes hx = h.x, hy = h.y, hz = h.z;
         const LaneLaw<Lanes> out = linearLawLanes<Lanes>(constants, b.law, m, dt, nx, ny, nz, overlap, rvx,
-                                                         rvy, rvz, effectiveMass, hx, hy, hz);
+                                                         rvy, rvz, effectiveMass, h.x, h.y, h.z);
         const Lanes normalForce = out.normalForce, ftx = out.ftx, fty = out.fty, ftz = out.ftz;
         const Lanes newSpringX = out.springX, newSpringY = out.springY, newSpringZ = out.springZ;
         const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
