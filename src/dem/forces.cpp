@@ -699,12 +699,8 @@ void computePairForces(World& world, Real dt)
     if (n == 0)
         return;
     const std::size_t pairCount = list.size();
-    if (pairCount == 0) // e.g. one ball on a turntable: nothing but the reset
-    {
-        std::fill(list.forceSum.begin(), list.forceSum.end(), NeighborList::Sum{});
-        std::fill(list.torqueSum.begin(), list.torqueSum.end(), NeighborList::Sum{});
+    if (pairCount == 0) // e.g. one ball on a turntable: no sums (addCrossBlockForces zeroes)
         return;
-    }
     const bool allBatchable = lanesApply(world);
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
 
@@ -843,6 +839,12 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
     const NeighborList& pairs = world.neighbors;
     if (pairs.forceSum.size() != p.size()) // no list built (no particles)
         return;
+    if (pairs.size() == 0) // no pair slots (one ball on a turntable): the sums were not written
+    {
+        for (std::size_t i = begin; i < end; ++i)
+            p.force[i] = p.torque[i] = Vec3{};
+        return;
+    }
     const bool hasIncoming = !pairs.incoming.empty();
     const std::uint32_t* const start = pairs.incomingStart.data();
     const std::uint32_t* const incoming = pairs.incoming.data();
