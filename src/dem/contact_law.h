@@ -102,11 +102,12 @@ VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const Cont
     // The dashpot needs the normal speed at t+dt, but only the half-step speed is known. Solve
     // the pair's own final half kick for it, u = u_half + dt/2 (elastic - eta u)/m*, so that
     // the damping of an isolated contact is integrated to second order (other forces on the two
-    // bodies are neglected in this estimate).
+    // bodies are neglected in this estimate). Written with m* in numerator and denominator,
+    // u = (m* u_half + dt/2 elastic) / (m* + dt/2 eta), so that it costs one division.
     const Real dampingWeight = dashpotWeight * c.etaN;
-    const Real halfStepOverMass = 0.5 * dt / in.effectiveMass;
+    const Real halfStep = 0.5 * dt;
     const Real normalSpeedEnd =
-        (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
+        (in.effectiveMass * normalSpeed + halfStep * elastic) / (in.effectiveMass + halfStep * dampingWeight);
     const Real normalForce = elastic - dampingWeight * normalSpeedEnd;
 
     // 2. Tangential force, capped by mu * Fn.

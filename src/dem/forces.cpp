@@ -370,9 +370,9 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, 
     if (anyLane(transition))
         dashpotWeight = transition ? 0.5 + overlap / travel : one;
     const Lanes dampingWeight = dashpotWeight * etaN;
-    const Lanes halfStepOverMass = 0.5 * dt / effectiveMass;
+    const Real halfStep = 0.5 * dt;
     const Lanes normalSpeedEnd =
-        (normalSpeed + halfStepOverMass * elastic) / (1.0 + halfStepOverMass * dampingWeight);
+        (effectiveMass * normalSpeed + halfStep * elastic) / (effectiveMass + halfStep * dampingWeight);
     const Lanes normalForce = elastic - dampingWeight * normalSpeedEnd;
 
     // 2. coulombSpringForce().
