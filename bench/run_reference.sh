@@ -12,7 +12,9 @@
 # VERIDEM_ROUNDS=N runs, instead, N side-by-side rounds on the settled bed: veridem and LAMMPS back
 # to back on 1 thread/rank, then on 2, each round printing the ratio of its two adjacent runs (and
 # the baseline build against this one, if given). On a machine whose speed drifts by +-25 % within
-# minutes, the spread of these ratios is the honest uncertainty of "veridem / LAMMPS".
+# minutes, the spread of these ratios is the honest uncertainty of "veridem / LAMMPS". LAMMPS runs
+# in 100-step runs here, so each round also prints the ratio of the two codes' best 100-step
+# windows: what each code does in the quietest moments of the run (on a dedicated machine).
 # OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
 # default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
 # every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
@@ -43,14 +45,28 @@ if [ -n "${VERIDEM_ROUNDS:-}" ]; then
     "$1" --steps "$steps" --threads "$2" --file "$shared/settled_bed_20k.xyz" |
       awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}'
   }
+  veridem_rates() { # bench binary, threads -> "whole-run best-window" particle-steps/s
+    "$1" --steps "$steps" --threads "$2" --file "$shared/settled_bed_20k.xyz" |
+      awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") w = $i}
+           /best window/ {b = $(NF - 1)} END {print w, b}'
+  }
+  lammps_rates() { # LAMMPS log of 100-step runs -> "whole-run best-window" particle-steps/s
+    awk '/^Loop time of/ {t += $4; s += $9; if ($12 * $9 / $4 > b) b = $12 * $9 / $4; a = $12}
+         END {printf "%.4g %.4g\n", a * s / t, b}' "$1"
+  }
   ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
   for r in $(seq "$VERIDEM_ROUNDS"); do
     for n in 1 2; do
-      v=$(veridem_rate "$bench" "$n")
+      set -- $(veridem_rates "$bench" "$n")
+      v=$1 vb=$2
+      # LAMMPS in runs of 100 steps (the same trajectory: `run pre no`), so that it too has a
+      # best 100-step window, the rate of a quiet moment of this shared machine.
       mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/bed.data" \
-        -var steps "$steps" -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
-      l=$(rate_of_loop "$work/lammps.log")
-      echo "round $r, bed, $n thread(s)/rank(s): veridem $v  LAMMPS $l  ratio $(ratio "$v" "$l")"
+        -var steps "$steps" -var window 100 -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
+      set -- $(lammps_rates "$work/lammps.log")
+      l=$1 lb=$2
+      echo "round $r, bed, $n thread(s)/rank(s): veridem $v  LAMMPS $l  ratio $(ratio "$v" "$l");" \
+        "best 100-step windows: veridem $vb  LAMMPS $lb  ratio $(ratio "$vb" "$lb")"
     done
     if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
       b=$(veridem_rate "$VERIDEM_BASELINE_BENCH" 1)
