@@ -14,17 +14,49 @@
 namespace veridem::dem
 {
 
-/// v += dt/2 a; w += dt/2 alpha; x += dt v.
-inline void kickDrift(ParticleStore& p, const Vec3& gravity, Real dt)
+/// Largest squared displacements [m^2] of a kickDrift against the neighbour list's two
+/// reference positions (NeighborList::MotionReference).
+struct Motion
+{
+    Real sinceBuild2 = 0, sinceActiveBuild2 = 0;
+};
+
+/// v += dt/2 a; w += dt/2 alpha; x += dt v. Measures, as it writes x, how far the particles are
+/// from `reference` (the neighbour list's motion check, without a second pass over the positions
+/// and a second parallel region); if reference.built is null, returns zero motion.
+inline Motion kickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
+                        NeighborList::MotionReference reference)
 {
     const Real half = 0.5 * dt;
-    parallelFor(p.size(),
-                [&](std::size_t i)
-                {
-                    p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
-                    p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
-                    p.position[i] += dt * p.velocity[i];
-                });
+    const std::size_t n = p.size();
+    const auto range = [&](std::size_t begin, std::size_t end)
+    {
+        Motion m;
+        for (std::size_t i = begin; i < end; ++i)
+        {
+            p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+            p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+            p.position[i] += dt * p.velocity[i];
+            if (reference.built)
+            {
+                m.sinceBuild2 = std::max(m.sinceBuild2, lengthSquared(p.position[i] - reference.built[i]));
+                m.sinceActiveBuild2 =
+                    std::max(m.sinceActiveBuild2, lengthSquared(p.position[i] - reference.activeBuilt[i]));
+            }
+        }
+        return m;
+    };
+    const int chunks = std::min(loopThreads(n), 64);
+    if (chunks == 1)
+        return range(0, n);
+    Motion chunk[64];
+    parallelChunks(n, chunks,
+                   [&](int c, std::size_t begin, std::size_t end) { chunk[c] = range(begin, end); });
+    Motion m; // a maximum: the same for any chunking
+    for (int c = 0; c < chunks; ++c)
+        m = {std::max(m.sinceBuild2, chunk[c].sinceBuild2),
+             std::max(m.sinceActiveBuild2, chunk[c].sinceActiveBuild2)};
+    return m;
 }
 
 inline void recordFirstNonFinite(const ParticleStore& p, StepHealth& health)

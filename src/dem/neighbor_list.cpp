@@ -54,9 +54,24 @@ bool NeighborList::checkMotion(const ParticleStore& particles)
     if (positionAtBuild_.size() != particles.size())
         return true;
     const auto [full, sub] = largestMotion2(particles);
-    if (sub > 0.25 * innerSkin * innerSkin)
+    return checkMotion(particles.size(), full, sub);
+}
+
+NeighborList::MotionReference NeighborList::motionReference(std::size_t particleCount) const
+{
+    if (positionAtBuild_.size() != particleCount)
+        return {};
+    const Vec3* const built = positionAtBuild_.data();
+    return {built, positionAtActiveBuild_.size() == particleCount ? positionAtActiveBuild_.data() : built};
+}
+
+bool NeighborList::checkMotion(std::size_t particleCount, Real largestMotion2, Real largestActiveMotion2)
+{
+    if (positionAtBuild_.size() != particleCount)
+        return true;
+    if (largestActiveMotion2 > 0.25 * innerSkin * innerSkin)
         activeStale_ = true;
-    return full > 0.25 * skin * skin;
+    return largestMotion2 > 0.25 * skin * skin;
 }
 
 void NeighborList::refreshActiveSlots(const ParticleStore& particles)

@@ -90,8 +90,22 @@ class NeighborList
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;
     /// needsRebuild(), and in the same pass marks the candidate sub-list stale if some particle
-    /// moved more than innerSkin/2 since it was built. Called once per step.
+    /// moved more than innerSkin/2 since it was built.
     bool checkMotion(const ParticleStore& particles);
+
+    /// The positions the motion check compares with [m], for a pass that moves the particles to
+    /// measure their largest displacement as it writes them (kickDrift, once per step): null if
+    /// the list was not built for `particleCount` particles.
+    struct MotionReference
+    {
+        const Vec3* built = nullptr;       // positions at the last full build
+        const Vec3* activeBuilt = nullptr; // positions when the candidate sub-list was built
+    };
+    MotionReference motionReference(std::size_t particleCount) const;
+    /// checkMotion() from the largest squared displacements [m^2] since the last full build and
+    /// since the sub-list was built, measured against motionReference() for `particleCount`
+    /// particles by the caller.
+    bool checkMotion(std::size_t particleCount, Real largestMotion2, Real largestActiveMotion2);
     /// Rebuilds activeSlots if stale, at the current positions, clearing the history of slots left
     /// out that were in contact (they just opened). `deferredForce`/`deferredTorque` of such
     /// slots are zeroed as well.

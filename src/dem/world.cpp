@@ -1,6 +1,7 @@
 // The step, read top to bottom (velocity Verlet, LAMMPS/Box2D style):
 //
-//   kick-drift     v(t+dt/2) = v(t) + dt/2 a(t);  w likewise;  x(t+dt) = x(t) + dt v(t+dt/2)
+//   kick-drift     v(t+dt/2) = v(t) + dt/2 a(t);  w likewise;  x(t+dt) = x(t) + dt v(t+dt/2),
+//                  measuring each particle's displacement since the lists were built
 //   walls          prescribed motion to t + dt
 //   neighbours     rebuild the Verlet and wall-contact lists if some particle moved more than
 //                  skin/2 (or a wall translated more than skin/2)
@@ -77,9 +78,9 @@ class StageClock
     std::chrono::steady_clock::time_point last_;
 };
 
-bool contactListsNeedRebuild(World& world)
+bool contactListsNeedRebuild(World& world, const Motion& moved)
 {
-    return world.neighbors.checkMotion(world.particles) ||
+    return world.neighbors.checkMotion(world.particles.size(), moved.sinceBuild2, moved.sinceActiveBuild2) ||
            world.wallContacts.needsRebuild(world.walls, world.neighbors.skin);
 }
 
@@ -158,10 +159,12 @@ void step(World& world, Real dt)
 
     StageClock clock(world.profile);
 
-    kickDrift(world.particles, world.gravity, dt); // v(t+dt/2), x(t+dt)
-    moveWalls(world.walls, dt);                    // wall motion to t+dt
+    const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
+        kickDrift(world.particles, world.gravity, dt,
+                  world.neighbors.motionReference(world.particles.size()));
+    moveWalls(world.walls, dt); // wall motion to t+dt
     clock.lap(&StepProfile::integration);
-    if (contactListsNeedRebuild(world)) // Verlet + wall lists, history merge
+    if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
         rebuildContactLists(world);
     clock.lap(&StepProfile::neighbours);
     computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
