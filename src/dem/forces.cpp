@@ -687,6 +687,14 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
         worst = {in.overlap / minRadius, i, true};
 }
 
+/// Zeroes the pair sums of particles [begin, end); returns end. Out of line: it runs once a block.
+[[gnu::noinline]] std::size_t zeroSums(const PairSink& sink, std::size_t begin, std::size_t end)
+{
+    std::fill(sink.force + begin, sink.force + end, NeighborList::Sum{});
+    std::fill(sink.torque + begin, sink.torque + end, NeighborList::Sum{});
+    return end;
+}
+
 } // namespace
 
 void computePairForces(World& world, Real dt)
@@ -739,8 +747,13 @@ void computePairForces(World& world, Real dt)
         {
             const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
                               endParticle = std::min(blockEdge[chunk + 1] * B, n);
-            std::fill(sink.force + firstParticle, sink.force + endParticle, NeighborList::Sum{});
-            std::fill(sink.torque + firstParticle, sink.torque + endParticle, NeighborList::Sum{});
+            // A block's sums are zeroed just before its first candidate, not the chunk's all at
+            // once: a block's contacts add only into its own particles' sums (the cross-block
+            // shares are deferred), so the sums are still in L2 when the contacts add to them
+            // (a chunk's sums, 64 B a particle, do not fit in a 512 KB L2).
+            std::size_t zeroedEnd = firstParticle; // sums [firstParticle, zeroedEnd) are zero
+            const auto blockEndOf = [&](std::size_t particle)
+            { return std::min((particle / B + 1) * B, endParticle); };
             const std::size_t begin = activeFrom(firstParticle),
                               end = endParticle == n ? activeCount : activeFrom(endParticle);
             WorstOverlap worst{0, 0, false};
@@ -758,6 +771,8 @@ void computePairForces(World& world, Real dt)
                 for (std::size_t a = begin; a < end; ++a)
                 {
                     const std::uint32_t k = active[a], i = first[k], j = second[k];
+                    if (i >= zeroedEnd)
+                        zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
                     const Real touching = radius[i] + radius[j];
                     if (lengthSquared(position[i] - position[j]) < touching * touching)
                     {
@@ -767,6 +782,7 @@ void computePairForces(World& world, Real dt)
                     else if (sink.mayBeActive[k])
                         list.openSlot(k);
                 }
+                zeroSums(sink, zeroedEnd, endParticle);
                 health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
                 return;
             }
@@ -777,6 +793,8 @@ void computePairForces(World& world, Real dt)
             for (std::size_t a = begin; a < end; ++a)
             {
                 const std::uint32_t k = active[a], i = first[k], j = second[k];
+                if (__builtin_expect(i >= zeroedEnd, 0)) // (the batch holds earlier blocks' contacts only)
+                    zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
                 {
                     // The partner of the candidate kAhead on, into cache for this pass and the
                     // lane kernel: j jumps across the Morton order (the neighbours above and
@@ -812,6 +830,7 @@ void computePairForces(World& world, Real dt)
             if (m > 0)
                 kernel(world, sink, dt, m, worst, batch, uniform);
             touchingCount += m;
+            zeroSums(sink, zeroedEnd, endParticle);
             health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
         });
     foldHealth(world.health, health, chunks, world.health.touchingPairs);
