@@ -766,6 +766,8 @@ void computePairForces(World& world, Real dt)
             const Vec3* const angularVelocity = p.angularVelocity.data();
             const Vec3* const spring = sink.spring;
             const Real* const radius = p.radius.data();
+            const std::uint32_t* const candidates = active; // (not through the closure)
+            std::uint8_t* const mayBeActive = sink.mayBeActive;
             if (!allBatchable)
             {
                 for (std::size_t a = begin; a < end; ++a)
@@ -792,7 +794,7 @@ void computePairForces(World& world, Real dt)
             std::size_t m = 0;
             for (std::size_t a = begin; a < end; ++a)
             {
-                const std::uint32_t k = active[a], i = first[k], j = second[k];
+                const std::uint32_t k = candidates[a], i = first[k], j = second[k];
                 if (__builtin_expect(i >= zeroedEnd, 0)) // (the batch holds earlier blocks' contacts only)
                     zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
                 {
@@ -800,7 +802,7 @@ void computePairForces(World& world, Real dt)
                     // lane kernel: j jumps across the Morton order (the neighbours above and
                     // below), and on a 512 KB L2 its rows often come from L3 (+5 % on the settled
                     // bed, Zen 3).
-                    const std::uint32_t kAhead = active[std::min(a + kPrefetchAhead, end - 1)];
+                    const std::uint32_t kAhead = candidates[std::min(a + kPrefetchAhead, end - 1)];
                     const std::uint32_t jAhead = second[kAhead];
                     __builtin_prefetch(&position[jAhead]);
                     __builtin_prefetch(&velocity[jAhead]);
@@ -818,7 +820,7 @@ void computePairForces(World& world, Real dt)
                 m += isTouching;
                 // One well-predicted branch: a slot opens rarely (`&&` would branch on isTouching,
                 // which is close to random).
-                if (__builtin_expect(sink.mayBeActive[k] & static_cast<std::uint8_t>(!isTouching), 0))
+                if (__builtin_expect(mayBeActive[k] & static_cast<std::uint8_t>(!isTouching), 0))
                     list.openSlot(k);
                 if (m == kBatch)
                 {
