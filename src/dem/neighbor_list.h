@@ -27,7 +27,6 @@
 #include "dem/particles.h"
 
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 namespace veridem::dem
@@ -89,10 +88,6 @@ class NeighborList
 
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;
-    /// needsRebuild(), and in the same pass marks the candidate sub-list stale if some particle
-    /// moved more than innerSkin/2 since it was built.
-    bool checkMotion(const ParticleStore& particles);
-
     /// The positions the motion check compares with [m], for a pass that moves the particles to
     /// measure their largest displacement as it writes them (kickDrift, once per step): null if
     /// the list was not built for `particleCount` particles.
@@ -102,9 +97,10 @@ class NeighborList
         const Vec3* activeBuilt = nullptr; // positions when the candidate sub-list was built
     };
     MotionReference motionReference(std::size_t particleCount) const;
-    /// checkMotion() from the largest squared displacements [m^2] since the last full build and
+    /// needsRebuild() from the largest squared displacements [m^2] since the last full build and
     /// since the sub-list was built, measured against motionReference() for `particleCount`
-    /// particles by the caller.
+    /// particles by the caller; also marks the candidate sub-list stale if some particle moved
+    /// more than innerSkin/2 since it was built. Called once per step.
     bool checkMotion(std::size_t particleCount, Real largestMotion2, Real largestActiveMotion2);
     /// Rebuilds activeSlots if stale, at the current positions, clearing the history of slots left
     /// out that were in contact (they just opened). `deferredForce`/`deferredTorque` of such
@@ -144,9 +140,6 @@ class NeighborList
     std::size_t memoryBytes() const;
 
   private:
-    /// Largest squared displacement since the last full build and since the sub-list was built.
-    std::pair<Real, Real> largestMotion2(const ParticleStore& particles) const;
-
     std::vector<Vec3> positionAtBuild_;
     std::vector<Vec3> positionAtActiveBuild_;
     bool activeStale_ = true;

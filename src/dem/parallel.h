@@ -30,23 +30,6 @@ inline int loopThreads(std::size_t count)
 #endif
 }
 
-/// body(k) for k in [0, count), statically scheduled.
-template <class Body> inline void parallelFor(std::size_t count, Body&& body)
-{
-#ifdef _OPENMP
-    if (loopThreads(count) > 1)
-    {
-        const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(count);
-#pragma omp parallel for schedule(static)
-        for (std::ptrdiff_t k = 0; k < n; ++k)
-            body(static_cast<std::size_t>(k));
-        return;
-    }
-#endif
-    for (std::size_t k = 0; k < count; ++k)
-        body(k);
-}
-
 /// Splits [0, count) into `chunks` contiguous ranges in order; chunk c is [begin, end).
 inline std::size_t chunkBegin(std::size_t count, int chunks, int c)
 {
