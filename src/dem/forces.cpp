@@ -707,7 +707,7 @@ void computePairForces(World& world, Real dt)
     if (n == 0)
         return;
     const std::size_t pairCount = list.size();
-    if (pairCount == 0) // e.g. one ball on a turntable: no sums (addCrossBlockForces zeroes)
+    if (pairCount == 0) // one ball on a turntable: no sums to fill (addCrossBlockForces zeroes F, T)
         return;
     const bool allBatchable = lanesApply(world);
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
@@ -772,7 +772,7 @@ void computePairForces(World& world, Real dt)
             {
                 for (std::size_t a = begin; a < end; ++a)
                 {
-                    const std::uint32_t k = active[a], i = first[k], j = second[k];
+                    const std::uint32_t k = candidates[a], i = first[k], j = second[k];
                     if (i >= zeroedEnd)
                         zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
                     const Real touching = radius[i] + radius[j];
@@ -781,7 +781,7 @@ void computePairForces(World& world, Real dt)
                         pairContactScalar(world, list, sink, dt, k, worst);
                         ++touchingCount;
                     }
-                    else if (sink.mayBeActive[k])
+                    else if (mayBeActive[k])
                         list.openSlot(k);
                 }
                 zeroSums(sink, zeroedEnd, endParticle);

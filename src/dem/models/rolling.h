@@ -31,12 +31,11 @@ inline Vec3 constantRollingTorque(Real muR, Real normalForce, const Vec3& relati
     const Real w = length(relativeAngularVelocity);
     if (w == 0 || muR == 0 || normalForce <= 0)
         return Vec3{};
-    // |M| / w = min(muR Fn / w, I_r / dt): one division after the square root instead of two (the
-    // ball's spin feeds back into this torque every step, so the chain's latency is the step's),
-    // and a plain comparison instead of a call to libm's fmin (w > 0 and Fn > 0 here, so neither
-    // operand is NaN unless an input is).
-    const Real sliding = muR * normalForce / w, stopping = rollingInertia / dt;
-    return relativeAngularVelocity * -(sliding < stopping ? sliding : stopping);
+    // |M| / w = min(muR Fn / w, I_r / dt): one division after the square root instead of two, and
+    // a plain comparison instead of a call to libm's fmin, which GCC does not inline (w > 0 and
+    // Fn > 0 here, so neither operand is NaN unless an input is).
+    const Real mobilised = muR * normalForce / w, stopping = rollingInertia / dt;
+    return relativeAngularVelocity * -(mobilised < stopping ? mobilised : stopping);
 }
 
 struct RollingSpringResult
