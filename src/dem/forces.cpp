@@ -167,20 +167,32 @@ template <class V> VERIDEM_HOT_INLINE V laneSqrt(V x) // correctly rounded, as s
     return r;
 }
 
+// Reductions of a comparison mask (lanes 0 or -1) by halving: a few register operations,
+// where a loop over the lanes compiled to a chain of extracts and branches. (movmskpd would be
+// one instruction, but a target-specific builtin cannot be inlined into these untargeted
+// templates.)
 template <class M> VERIDEM_HOT_INLINE bool anyLane(const M& mask)
 {
-    bool any = false;
-    for (std::size_t l = 0; l < sizeof(M) / sizeof(long long); ++l)
-        any = any || mask[l] != 0;
-    return any;
+    if constexpr (sizeof(M) == 32)
+    {
+        const auto half =
+            __builtin_shufflevector(mask, mask, 0, 1) | __builtin_shufflevector(mask, mask, 2, 3);
+        return (half[0] | half[1]) != 0;
+    }
+    else
+        return (mask[0] | mask[1]) != 0;
 }
 
 template <class M> VERIDEM_HOT_INLINE bool allLanes(const M& mask)
 {
-    bool all = true;
-    for (std::size_t l = 0; l < sizeof(M) / sizeof(long long); ++l)
-        all = all && mask[l] != 0;
-    return all;
+    if constexpr (sizeof(M) == 32)
+    {
+        const auto half =
+            __builtin_shufflevector(mask, mask, 0, 1) & __builtin_shufflevector(mask, mask, 2, 3);
+        return (half[0] & half[1]) != 0;
+    }
+    else
+        return (mask[0] & mask[1]) != 0;
 }
 
 template <class V> VERIDEM_HOT_INLINE V load(const double* a)
@@ -410,6 +422,31 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, 
     return {normalForce, ftx, fty, ftz, newSpringX, newSpringY, newSpringZ};
 }
 
+/// Adds contact q of batch `b` to the sink: force f [N] on i and -f on j, torques ti on i and tj
+/// on j [N m] (vectors (x, y, z, 0)), or j's share to the slot's deferred entry; stores the new
+/// tangential spring [m] and marks the slot mayBeActive.
+VERIDEM_HOT_INLINE void scatterContact(const PairSink& sink, const PairBatch& b, std::size_t q,
+                                       const Lanes4& f, const Lanes4& ti, const Lanes4& tj,
+                                       const Lanes4& spring)
+{
+    const std::uint32_t k = b.slot[q], i = b.i[q], j = b.j[q];
+    sink.mayBeActive[k] = 1;
+    std::memcpy(&sink.spring[k].x, &spring, 3 * sizeof(double)); // x, y, z of (x, y, z, 0)
+    addInto(&sink.force[i].x, f);
+    addInto(&sink.torque[i].x, ti);
+    const std::uint32_t d = sink.deferredIndex[k];
+    if (d == NeighborList::kInBlock)
+    {
+        subtractFrom(&sink.force[j].x, f);
+        addInto(&sink.torque[j].x, tj);
+    }
+    else
+    {
+        sink.deferredForce[d] = {-f[0], -f[1], -f[2]};
+        std::memcpy(&sink.deferredTorque[d].x, &tj, 3 * sizeof(double));
+    }
+}
+
 /// Evaluates the touching contacts [0, count) of `b` (count <= kBatch; slot, i and j collected by
 /// the caller; the law batchable) and adds them into
 /// the sink in lane order, exactly as the scalar path does. `uniform`: the pair parameters if
@@ -442,8 +479,23 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
 
     const Lanes zero = {}, one = zero + 1.0, negativeZero = -zero;
     const LaneConstants<Lanes> constants(uniform);
+    // The partners' velocity rows and the slots' springs, kFetchAhead lanes before their use (the
+    // selection pass fetched the positions): one group of lanes takes ~300 cycles, more than an
+    // L3 hit.
+    constexpr std::size_t kFetchAhead = 2 * kLanes;
+    const auto fetch = [&](std::size_t lane)
+    {
+        __builtin_prefetch(&velocity[b.j[lane]]);
+        __builtin_prefetch(&angularVelocity[b.j[lane]]);
+        __builtin_prefetch(&sink.spring[b.slot[lane]]);
+    };
+    for (std::size_t m = 0; m < std::min(kFetchAhead, padded); ++m)
+        fetch(m);
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
+        if (m + kFetchAhead < padded)
+            for (std::size_t l = 0; l < kLanes; ++l)
+                fetch(m + kFetchAhead + l);
         // Geometry (as pairContactScalar).
         const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
         const Lanes3<Lanes> xi = gatherVec3<Lanes>(position, laneI), xj = gatherVec3<Lanes>(position, laneJ);
@@ -488,33 +540,28 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes minRadius = rj < ri ? rj : ri;
 
         // Scatter, in lane (= slot) order: one (x, y, z, 0) vector per contact and sum.
-        Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes];
+        Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
         transpose(fx, fy, fz, force);
         transpose(tix, tiy, tiz, torqueI);
         transpose(tjx, tjy, tjz, torqueJ);
-
+        transpose(newSpringX, newSpringY, newSpringZ, spring);
         const std::size_t lanes = std::min(kLanes, count - m);
-        for (std::size_t l = 0; l < lanes; ++l)
+        if (lanes == kLanes) // (a constant trip count: unrolled, every lane index a constant)
         {
-            const std::uint32_t k = b.slot[m + l], i = b.i[m + l], j = b.j[m + l];
-            sink.mayBeActive[k] = 1;
-            sink.spring[k] = {newSpringX[l], newSpringY[l], newSpringZ[l]};
-            addInto(&sink.force[i].x, force[l]);
-            addInto(&sink.torque[i].x, torqueI[l]);
-            const std::uint32_t d = sink.deferredIndex[k];
-            if (d == NeighborList::kInBlock)
-            {
-                subtractFrom(&sink.force[j].x, force[l]);
-                addInto(&sink.torque[j].x, torqueJ[l]);
-            }
-            else
-            {
-                sink.deferredForce[d] = {-force[l][0], -force[l][1], -force[l][2]};
-                sink.deferredTorque[d] = {torqueJ[l][0], torqueJ[l][1], torqueJ[l][2]};
-            }
-            if (worst.exceededBy(overlap[l], minRadius[l]))
-                worst = {overlap[l] / minRadius[l], i, true};
+#pragma GCC unroll 4
+            for (std::size_t l = 0; l < kLanes; ++l)
+                scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
         }
+        else
+            for (std::size_t l = 0; l < lanes; ++l)
+                scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
+
+        // The health record, in lane order. One comparison first: the running ratio only grows,
+        // so a lane that does not exceed it now cannot exceed it after an earlier lane's update.
+        if (anyLane(overlap > worst.ratio * minRadius))
+            for (std::size_t l = 0; l < lanes; ++l)
+                if (worst.exceededBy(overlap[l], minRadius[l]))
+                    worst = {overlap[l] / minRadius[l], b.i[m + l], true};
     }
 }
 
@@ -741,100 +788,103 @@ void computePairForces(World& world, Real dt)
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
     ContactHealth health[kMaxChunks];
-    parallelChunks(
-        static_cast<std::size_t>(chunks), chunks,
-        [&](int chunk, std::size_t, std::size_t)
-        {
-            const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
-                              endParticle = std::min(blockEdge[chunk + 1] * B, n);
-            // A block's sums are zeroed just before its first candidate, not the chunk's all at
-            // once: a block's contacts add only into its own particles' sums (the cross-block
-            // shares are deferred), so the sums are still in L2 when the contacts add to them
-            // (a chunk's sums, 64 B a particle, do not fit in a 512 KB L2).
-            std::size_t zeroedEnd = firstParticle; // sums [firstParticle, zeroedEnd) are zero
-            const auto blockEndOf = [&](std::size_t particle)
-            { return std::min((particle / B + 1) * B, endParticle); };
-            const std::size_t begin = activeFrom(firstParticle),
-                              end = endParticle == n ? activeCount : activeFrom(endParticle);
-            WorstOverlap worst{0, 0, false};
-            std::size_t touchingCount = 0;
-            // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
-            const std::uint32_t* const first = list.first.data();
-            const std::uint32_t* const second = list.second.data();
-            const Vec3* const position = p.position.data();
-            const Vec3* const velocity = p.velocity.data();
-            const Vec3* const angularVelocity = p.angularVelocity.data();
-            const Vec3* const spring = sink.spring;
-            const Real* const radius = p.radius.data();
-            const std::uint32_t* const candidates = active; // (not through the closure)
-            std::uint8_t* const mayBeActive = sink.mayBeActive;
-            if (!allBatchable)
-            {
-                for (std::size_t a = begin; a < end; ++a)
-                {
-                    const std::uint32_t k = candidates[a], i = first[k], j = second[k];
-                    if (i >= zeroedEnd)
-                        zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
-                    const Real touching = radius[i] + radius[j];
-                    if (lengthSquared(position[i] - position[j]) < touching * touching)
-                    {
-                        pairContactScalar(world, list, sink, dt, k, worst);
-                        ++touchingCount;
-                    }
-                    else if (mayBeActive[k])
-                        list.openSlot(k);
-                }
-                zeroSums(sink, zeroedEnd, endParticle);
-                health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
-                return;
-            }
-            // One pass: each touching slot is appended (branch-free) to a batch, which runs when
-            // full.
-            PairBatch batch;
-            std::size_t m = 0;
-            for (std::size_t a = begin; a < end; ++a)
-            {
-                const std::uint32_t k = candidates[a], i = first[k], j = second[k];
-                if (__builtin_expect(i >= zeroedEnd, 0)) // (the batch holds earlier blocks' contacts only)
-                    zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
-                {
-                    // The partner of the candidate kAhead on, into cache for this pass and the
-                    // lane kernel: j jumps across the Morton order (the neighbours above and
-                    // below), and on a 512 KB L2 its rows often come from L3 (+5 % on the settled
-                    // bed, Zen 3).
-                    const std::uint32_t kAhead = candidates[std::min(a + kPrefetchAhead, end - 1)];
-                    const std::uint32_t jAhead = second[kAhead];
-                    __builtin_prefetch(&position[jAhead]);
-                    __builtin_prefetch(&velocity[jAhead]);
-                    __builtin_prefetch(&angularVelocity[jAhead]);
-                    __builtin_prefetch(&spring[kAhead]);
-                }
-                const Vec3 &xi = position[i], &xj = position[j];
-                const Real ri = radius[i], rj = radius[j];
-                const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-                const Real touching = ri + rj;
-                const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
-                batch.slot[m] = k;
-                batch.i[m] = i;
-                batch.j[m] = j;
-                m += isTouching;
-                // One well-predicted branch: a slot opens rarely (`&&` would branch on isTouching,
-                // which is close to random).
-                if (__builtin_expect(mayBeActive[k] & static_cast<std::uint8_t>(!isTouching), 0))
-                    list.openSlot(k);
-                if (m == kBatch)
-                {
-                    kernel(world, sink, dt, m, worst, batch, uniform);
-                    touchingCount += m;
-                    m = 0;
-                }
-            }
-            if (m > 0)
-                kernel(world, sink, dt, m, worst, batch, uniform);
-            touchingCount += m;
-            zeroSums(sink, zeroedEnd, endParticle);
-            health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
-        });
+    parallelChunks(static_cast<std::size_t>(chunks), chunks,
+                   [&](int chunk, std::size_t, std::size_t)
+                   {
+                       const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
+                                         endParticle = std::min(blockEdge[chunk + 1] * B, n);
+                       // A block's sums are zeroed just before its first candidate, not the chunk's all at
+                       // once: a block's contacts add only into its own particles' sums (the cross-block
+                       // shares are deferred), so the sums are still in L2 when the contacts add to them
+                       // (a chunk's sums, 64 B a particle, do not fit in a 512 KB L2).
+                       std::size_t zeroedEnd = firstParticle; // sums [firstParticle, zeroedEnd) are zero
+                       const auto blockEndOf = [&](std::size_t particle)
+                       { return std::min((particle / B + 1) * B, endParticle); };
+                       const std::size_t begin = activeFrom(firstParticle),
+                                         end = endParticle == n ? activeCount : activeFrom(endParticle);
+                       WorstOverlap worst{0, 0, false};
+                       std::size_t touchingCount = 0;
+                       // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
+                       const std::uint32_t* const first = list.first.data();
+                       const std::uint32_t* const second = list.second.data();
+                       const Vec3* const position = p.position.data();
+                       const Real* const radius = p.radius.data();
+                       const std::uint32_t* const candidates = active; // (not through the closure)
+                       std::uint8_t* const mayBeActive = sink.mayBeActive;
+                       if (!allBatchable)
+                       {
+                           for (std::size_t a = begin; a < end; ++a)
+                           {
+                               const std::uint32_t k = candidates[a], i = first[k], j = second[k];
+                               if (i >= zeroedEnd)
+                                   zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
+                               const Real touching = radius[i] + radius[j];
+                               if (lengthSquared(position[i] - position[j]) < touching * touching)
+                               {
+                                   pairContactScalar(world, list, sink, dt, k, worst);
+                                   ++touchingCount;
+                               }
+                               else if (mayBeActive[k])
+                                   list.openSlot(k);
+                           }
+                           zeroSums(sink, zeroedEnd, endParticle);
+                           health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
+                           return;
+                       }
+                       // One pass: each touching slot is appended (branch-free) to a batch, which runs when
+                       // full. The inner loop calls nothing, so that its pointers stay in registers (a call
+                       // inside it, however rare, made GCC reload them from the stack every candidate):
+                       // it stops at a block's first candidate (whose sums are zeroed outside), and slots
+                       // found open are only recorded, then opened outside (openSlot touches no slot of the
+                       // batch, and nothing in this pass reads what it writes again).
+                       PairBatch batch;
+                       std::uint32_t opened[kBatch];
+                       std::size_t m = 0, o = 0;
+                       std::size_t a = begin;
+                       while (a < end)
+                       {
+                           // m and o grow by at most one per candidate: kBatch - max(m, o) more fill neither.
+                           const std::size_t stop = std::min(end, a + (kBatch - std::max(m, o)));
+                           for (; a < stop; ++a)
+                           {
+                               const std::uint32_t k = candidates[a], i = first[k], j = second[k];
+                               if (__builtin_expect(i >= zeroedEnd, 0)) // a new block
+                                   break;
+                               // The partner's position kPrefetchAhead candidates on, into cache: j jumps
+                               // across the Morton order (the neighbours above and below), and on a 512 KB L2
+                               // its rows often come from L3. (The kernel fetches the rest of its rows
+                               // ahead.)
+                               __builtin_prefetch(
+                                   &position[second[candidates[std::min(a + kPrefetchAhead, end - 1)]]]);
+                               const Vec3 &xi = position[i], &xj = position[j];
+                               const Real ri = radius[i], rj = radius[j];
+                               const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
+                               const Real touching = ri + rj;
+                               const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
+                               batch.slot[m] = k;
+                               batch.i[m] = i;
+                               batch.j[m] = j;
+                               m += isTouching;
+                               opened[o] = k; // kept if it was in contact and is no more (rare)
+                               o += mayBeActive[k] & static_cast<std::uint8_t>(!isTouching);
+                           }
+                           for (std::size_t q = 0; q < o; ++q)
+                               list.openSlot(opened[q]);
+                           o = 0;
+                           if (m == kBatch || a == end)
+                           {
+                               if (m > 0)
+                                   kernel(world, sink, dt, m, worst, batch, uniform);
+                               touchingCount += m;
+                               m = 0;
+                           }
+                           if (a < end && first[candidates[a]] >= zeroedEnd)
+                               // (the batch holds earlier blocks' contacts only)
+                               zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[candidates[a]]));
+                       }
+                       zeroSums(sink, zeroedEnd, endParticle);
+                       health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
+                   });
     foldHealth(world.health, health, chunks, world.health.touchingPairs);
 }
 
