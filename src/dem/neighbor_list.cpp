@@ -39,7 +39,7 @@ bool NeighborList::checkMotion(std::size_t particleCount, Real largestMotion2, R
 void NeighborList::refreshActiveSlots(const ParticleStore& particles)
 {
     ++activeAge_;
-    const bool mayShrink = activeAge_ > 128 && innerSkin > skin / 16; // long-lived: try a tighter one
+    const bool mayShrink = activeAge_ > 128 && innerSkin > skin / 64; // long-lived: try a tighter one
     if (!activeStale_ && !mayShrink)
         return;
     // Adapt the inner skin to the lifetime of the sub-list just ended.
@@ -48,7 +48,7 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
     else if (activeAge_ < 8)
         innerSkin = std::min(2 * innerSkin, skin);
     else if (activeAge_ > 128)
-        innerSkin = std::max(0.5 * innerSkin, skin / 16);
+        innerSkin = std::max(0.5 * innerSkin, skin / 64);
     activeAge_ = 0;
     activeStale_ = false;
     ++activeRebuilds_;
