@@ -101,6 +101,13 @@ constexpr std::size_t kFinishBlock = 512;
 /// sets `finite` to false if some state of the range is not finite.
 ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t end, bool& finite)
 {
+    if (end - begin <= kFinishBlock) // one sub-block (one ball on a turntable): nothing to combine
+    {
+        addCrossBlockForces(world, begin, end);
+        const ContactHealth walls = computeWallForces(world, dt, begin, end);
+        finite = kick(world.particles, world.gravity, dt, begin, end);
+        return walls;
+    }
     ContactHealth health{0, 0, false, 0};
     finite = true;
     for (std::size_t s = begin; s < end; s += kFinishBlock)
@@ -123,16 +130,23 @@ void finishParticles(World& world, Real dt)
     ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     const int chunks = std::min(loopThreads(n), 64);
-    ContactHealth walls[64]{}; // (zeroed: GCC cannot see that chunks <= 64 entries are written)
-    bool finite[64]{};
-    if (chunks == 1) // small worlds (one ball on a turntable): no parallel region
-        walls[0] = finishRange(world, dt, 0, n, finite[0]);
+    if (chunks == 1) // small worlds (one ball on a turntable): no parallel region, no chunk arrays
+    {
+        bool finite = true;
+        const ContactHealth walls = finishRange(world, dt, 0, n, finite);
+        mergeWallHealth(world.health, &walls, 1);
+        world.health.finite = finite;
+    }
     else
+    {
+        ContactHealth walls[64]{}; // (zeroed: GCC cannot see that chunks <= 64 entries are written)
+        bool finite[64]{};
         parallelChunks(n, chunks,
                        [&](int c, std::size_t begin, std::size_t end)
                        { walls[c] = finishRange(world, dt, begin, end, finite[c]); });
-    mergeWallHealth(world.health, walls, chunks);
-    world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
+        mergeWallHealth(world.health, walls, chunks);
+        world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
+    }
     if (!world.health.finite)
         recordFirstNonFinite(p, world.health);
 }
