@@ -28,48 +28,22 @@ inline Motion kickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
                         NeighborList::MotionReference reference)
 {
     const Real half = 0.5 * dt;
-    const Vec3 g = gravity; // (a copy: a store to a particle could alias the reference)
     const std::size_t n = p.size();
-    const auto range = [&p, g, half, dt, reference](std::size_t begin, std::size_t end)
+    const auto range = [&](std::size_t begin, std::size_t end)
     {
-        // Bases and constants in locals, new values kept in registers: the same operations as
-        // `v += half (F/m + g); w += (half/I) T; x += dt v`, without reloading what was just stored.
-        Vec3* const position = p.position.data();
-        Vec3* const velocity = p.velocity.data();
-        Vec3* const angularVelocity = p.angularVelocity.data();
-        const Vec3* const force = p.force.data();
-        const Vec3* const torque = p.torque.data();
-        const Real* const invMass = p.invMass.data();
-        const Real* const invInertia = p.invInertia.data();
-        const Real gx = g.x, gy = g.y, gz = g.z;
-        Real sinceBuild2 = 0, sinceActiveBuild2 = 0;
+        Motion m;
         for (std::size_t i = begin; i < end; ++i)
         {
-            // (components spelled out: GCC stages Vec3 temporaries through the stack here)
-            const Real im = invMass[i], halfInvInertia = half * invInertia[i];
-            const Real vx = velocity[i].x + half * (force[i].x * im + gx),
-                       vy = velocity[i].y + half * (force[i].y * im + gy),
-                       vz = velocity[i].z + half * (force[i].z * im + gz);
-            const Real wx = angularVelocity[i].x + halfInvInertia * torque[i].x,
-                       wy = angularVelocity[i].y + halfInvInertia * torque[i].y,
-                       wz = angularVelocity[i].z + halfInvInertia * torque[i].z;
-            const Real xx = position[i].x + dt * vx, xy = position[i].y + dt * vy,
-                       xz = position[i].z + dt * vz;
-            velocity[i] = {vx, vy, vz};
-            angularVelocity[i] = {wx, wy, wz};
-            position[i] = {xx, xy, xz};
+            p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+            p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+            p.position[i] += dt * p.velocity[i];
             if (reference.built)
             {
-                const Vec3 &b = reference.built[i], &a = reference.activeBuilt[i];
-                const Real bx = xx - b.x, by = xy - b.y, bz = xz - b.z;
-                const Real ax = xx - a.x, ay = xy - a.y, az = xz - a.z;
-                sinceBuild2 = std::max(sinceBuild2, bx * bx + by * by + bz * bz);
-                sinceActiveBuild2 = std::max(sinceActiveBuild2, ax * ax + ay * ay + az * az);
+                m.sinceBuild2 = std::max(m.sinceBuild2, lengthSquared(p.position[i] - reference.built[i]));
+                m.sinceActiveBuild2 =
+                    std::max(m.sinceActiveBuild2, lengthSquared(p.position[i] - reference.activeBuilt[i]));
             }
         }
-        Motion m;
-        m.sinceBuild2 = sinceBuild2;
-        m.sinceActiveBuild2 = sinceActiveBuild2;
         return m;
     };
     const int chunks = std::min(loopThreads(n), 64);

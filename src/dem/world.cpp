@@ -101,13 +101,6 @@ constexpr std::size_t kFinishBlock = 512;
 /// sets `finite` to false if some state of the range is not finite.
 ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t end, bool& finite)
 {
-    if (end - begin <= kFinishBlock) // one sub-block (one ball on a turntable): nothing to combine
-    {
-        addCrossBlockForces(world, begin, end);
-        const ContactHealth walls = computeWallForces(world, dt, begin, end);
-        finite = kick(world.particles, world.gravity, dt, begin, end);
-        return walls;
-    }
     ContactHealth health{0, 0, false, 0};
     finite = true;
     for (std::size_t s = begin; s < end; s += kFinishBlock)
@@ -130,7 +123,14 @@ void finishParticles(World& world, Real dt)
     ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     const int chunks = std::min(loopThreads(n), 64);
-    if (chunks == 1) // small worlds (one ball on a turntable): no parallel region, no chunk arrays
+    if (chunks == 1 && n <= kFinishBlock) // one ball on a turntable: the three calls, nothing else
+    {
+        addCrossBlockForces(world, 0, n);
+        const ContactHealth walls = computeWallForces(world, dt, 0, n);
+        mergeWallHealth(world.health, &walls, 1);
+        world.health.finite = kick(p, world.gravity, dt, 0, n);
+    }
+    else if (chunks == 1) // no parallel region, no chunk arrays
     {
         bool finite = true;
         const ContactHealth walls = finishRange(world, dt, 0, n, finite);
