@@ -15,6 +15,7 @@
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
 // stage and the kinetic energy at the end. Nothing is written during the timed loop.
 #include "dem/forces.h"
+#include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
 
@@ -176,26 +177,20 @@ World bedWorld(const Options& o)
     return world;
 }
 
-/// One steel ball (a = 6.35 mm) rolling on a turntable turning at 10 rad/s, with type A rolling
-/// friction (the paper's Test 1 set-up with a push).
+/// The paper's flat-turntable ball (verify::flatTurntableBall: steel, a = 6.35 mm, type A rolling
+/// friction, as the verification cases run it) rolling on a turntable turning at 10 rad/s: the
+/// paper's Test 1 set-up with a push.
 World turntableWorld()
 {
     World world;
-    Material m;
-    m.name = "steel";
-    m.density = 7800;
-    m.normalStiffness = 1e5;
-    m.restitution = 0.8;
-    m.friction = 0.15;
-    m.rollingModel = RollingModel::ConstantTorque;
-    m.rollingFrictionLength = 1.5e-6;
+    const Material m = verify::flatTurntableBall();
     world.addMaterial(m);
     Wall table;
     table.name = "turntable";
     table.shape = PlaneShape{{0, 0, 0}, {0, 0, 1}, 0.2};
     table.motion.angularVelocity = {0, 0, 10};
     world.walls.push_back(table);
-    const Real a = 6.35e-3;
+    const Real a = verify::kFlatBallRadius;
     const Real mass = m.density * 4.0 / 3.0 * 3.14159265358979 * a * a * a;
     const Real overlap = mass * 9.81 / m.normalStiffness;
     world.particles.add({-0.04, 0, a - overlap}, {0, -0.107, 0}, {}, a, m.density, 0);
