@@ -788,103 +788,103 @@ void computePairForces(World& world, Real dt)
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
     ContactHealth health[kMaxChunks];
-    parallelChunks(static_cast<std::size_t>(chunks), chunks,
-                   [&](int chunk, std::size_t, std::size_t)
-                   {
-                       const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
-                                         endParticle = std::min(blockEdge[chunk + 1] * B, n);
-                       // A block's sums are zeroed just before its first candidate, not the chunk's all at
-                       // once: a block's contacts add only into its own particles' sums (the cross-block
-                       // shares are deferred), so the sums are still in L2 when the contacts add to them
-                       // (a chunk's sums, 64 B a particle, do not fit in a 512 KB L2).
-                       std::size_t zeroedEnd = firstParticle; // sums [firstParticle, zeroedEnd) are zero
-                       const auto blockEndOf = [&](std::size_t particle)
-                       { return std::min((particle / B + 1) * B, endParticle); };
-                       const std::size_t begin = activeFrom(firstParticle),
-                                         end = endParticle == n ? activeCount : activeFrom(endParticle);
-                       WorstOverlap worst{0, 0, false};
-                       std::size_t touchingCount = 0;
-                       // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
-                       const std::uint32_t* const first = list.first.data();
-                       const std::uint32_t* const second = list.second.data();
-                       const Vec3* const position = p.position.data();
-                       const Real* const radius = p.radius.data();
-                       const std::uint32_t* const candidates = active; // (not through the closure)
-                       std::uint8_t* const mayBeActive = sink.mayBeActive;
-                       if (!allBatchable)
-                       {
-                           for (std::size_t a = begin; a < end; ++a)
-                           {
-                               const std::uint32_t k = candidates[a], i = first[k], j = second[k];
-                               if (i >= zeroedEnd)
-                                   zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
-                               const Real touching = radius[i] + radius[j];
-                               if (lengthSquared(position[i] - position[j]) < touching * touching)
-                               {
-                                   pairContactScalar(world, list, sink, dt, k, worst);
-                                   ++touchingCount;
-                               }
-                               else if (mayBeActive[k])
-                                   list.openSlot(k);
-                           }
-                           zeroSums(sink, zeroedEnd, endParticle);
-                           health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
-                           return;
-                       }
-                       // One pass: each touching slot is appended (branch-free) to a batch, which runs when
-                       // full. The inner loop calls nothing, so that its pointers stay in registers (a call
-                       // inside it, however rare, made GCC reload them from the stack every candidate):
-                       // it stops at a block's first candidate (whose sums are zeroed outside), and slots
-                       // found open are only recorded, then opened outside (openSlot touches no slot of the
-                       // batch, and nothing in this pass reads what it writes again).
-                       PairBatch batch;
-                       std::uint32_t opened[kBatch];
-                       std::size_t m = 0, o = 0;
-                       std::size_t a = begin;
-                       while (a < end)
-                       {
-                           // m and o grow by at most one per candidate: kBatch - max(m, o) more fill neither.
-                           const std::size_t stop = std::min(end, a + (kBatch - std::max(m, o)));
-                           for (; a < stop; ++a)
-                           {
-                               const std::uint32_t k = candidates[a], i = first[k], j = second[k];
-                               if (__builtin_expect(i >= zeroedEnd, 0)) // a new block
-                                   break;
-                               // The partner's position kPrefetchAhead candidates on, into cache: j jumps
-                               // across the Morton order (the neighbours above and below), and on a 512 KB L2
-                               // its rows often come from L3. (The kernel fetches the rest of its rows
-                               // ahead.)
-                               __builtin_prefetch(
-                                   &position[second[candidates[std::min(a + kPrefetchAhead, end - 1)]]]);
-                               const Vec3 &xi = position[i], &xj = position[j];
-                               const Real ri = radius[i], rj = radius[j];
-                               const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-                               const Real touching = ri + rj;
-                               const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
-                               batch.slot[m] = k;
-                               batch.i[m] = i;
-                               batch.j[m] = j;
-                               m += isTouching;
-                               opened[o] = k; // kept if it was in contact and is no more (rare)
-                               o += mayBeActive[k] & static_cast<std::uint8_t>(!isTouching);
-                           }
-                           for (std::size_t q = 0; q < o; ++q)
-                               list.openSlot(opened[q]);
-                           o = 0;
-                           if (m == kBatch || a == end)
-                           {
-                               if (m > 0)
-                                   kernel(world, sink, dt, m, worst, batch, uniform);
-                               touchingCount += m;
-                               m = 0;
-                           }
-                           if (a < end && first[candidates[a]] >= zeroedEnd)
-                               // (the batch holds earlier blocks' contacts only)
-                               zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[candidates[a]]));
-                       }
-                       zeroSums(sink, zeroedEnd, endParticle);
-                       health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
-                   });
+    // One chunk: its blocks' candidates, selected and evaluated in batches.
+    const auto pairChunk = [&](int chunk, std::size_t, std::size_t)
+    {
+        const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
+                          endParticle = std::min(blockEdge[chunk + 1] * B, n);
+        // A block's sums are zeroed just before its first candidate, not the chunk's all at
+        // once: a block's contacts add only into its own particles' sums (the cross-block
+        // shares are deferred), so the sums are still in L2 when the contacts add to them
+        // (a chunk's sums, 64 B a particle, do not fit in a 512 KB L2).
+        std::size_t zeroedEnd = firstParticle; // sums [firstParticle, zeroedEnd) are zero
+        const auto blockEndOf = [&](std::size_t particle)
+        { return std::min((particle / B + 1) * B, endParticle); };
+        const std::size_t begin = activeFrom(firstParticle),
+                          end = endParticle == n ? activeCount : activeFrom(endParticle);
+        WorstOverlap worst{0, 0, false};
+        std::size_t touchingCount = 0;
+        // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
+        const std::uint32_t* const first = list.first.data();
+        const std::uint32_t* const second = list.second.data();
+        const Vec3* const position = p.position.data();
+        const Real* const radius = p.radius.data();
+        const std::uint32_t* const candidates = active; // (not through the closure)
+        std::uint8_t* const mayBeActive = sink.mayBeActive;
+        if (!allBatchable)
+        {
+            for (std::size_t a = begin; a < end; ++a)
+            {
+                const std::uint32_t k = candidates[a], i = first[k], j = second[k];
+                if (i >= zeroedEnd)
+                    zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
+                const Real touching = radius[i] + radius[j];
+                if (lengthSquared(position[i] - position[j]) < touching * touching)
+                {
+                    pairContactScalar(world, list, sink, dt, k, worst);
+                    ++touchingCount;
+                }
+                else if (mayBeActive[k])
+                    list.openSlot(k);
+            }
+            zeroSums(sink, zeroedEnd, endParticle);
+            health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
+            return;
+        }
+        // One pass: each touching slot is appended (branch-free) to a batch, which runs when
+        // full. The inner loop calls nothing, so that its pointers stay in registers (a call
+        // inside it, however rare, made GCC reload them from the stack every candidate):
+        // it stops at a block's first candidate (whose sums are zeroed outside), and slots
+        // found open are only recorded, then opened outside (openSlot touches no slot of the
+        // batch, and nothing in this pass reads what it writes again).
+        PairBatch batch;
+        std::uint32_t opened[kBatch];
+        std::size_t m = 0, o = 0;
+        std::size_t a = begin;
+        while (a < end)
+        {
+            // m and o grow by at most one per candidate: kBatch - max(m, o) more fill neither.
+            const std::size_t stop = std::min(end, a + (kBatch - std::max(m, o)));
+            for (; a < stop; ++a)
+            {
+                const std::uint32_t k = candidates[a], i = first[k], j = second[k];
+                if (__builtin_expect(i >= zeroedEnd, 0)) // a new block
+                    break;
+                // The partner's position kPrefetchAhead candidates on, into cache: j jumps
+                // across the Morton order (the neighbours above and below), and on a 512 KB L2
+                // its rows often come from L3. (The kernel fetches the rest of its rows
+                // ahead.)
+                __builtin_prefetch(&position[second[candidates[std::min(a + kPrefetchAhead, end - 1)]]]);
+                const Vec3 &xi = position[i], &xj = position[j];
+                const Real ri = radius[i], rj = radius[j];
+                const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
+                const Real touching = ri + rj;
+                const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
+                batch.slot[m] = k;
+                batch.i[m] = i;
+                batch.j[m] = j;
+                m += isTouching;
+                opened[o] = k; // kept if it was in contact and is no more (rare)
+                o += mayBeActive[k] & static_cast<std::uint8_t>(!isTouching);
+            }
+            for (std::size_t q = 0; q < o; ++q)
+                list.openSlot(opened[q]);
+            o = 0;
+            if (m == kBatch || a == end)
+            {
+                if (m > 0)
+                    kernel(world, sink, dt, m, worst, batch, uniform);
+                touchingCount += m;
+                m = 0;
+            }
+            if (a < end && first[candidates[a]] >= zeroedEnd)
+                // (the batch holds earlier blocks' contacts only)
+                zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[candidates[a]]));
+        }
+        zeroSums(sink, zeroedEnd, endParticle);
+        health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
+    };
+    parallelChunks(static_cast<std::size_t>(chunks), chunks, pairChunk);
     foldHealth(world.health, health, chunks, world.health.touchingPairs);
 }
 
