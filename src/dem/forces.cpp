@@ -18,6 +18,7 @@
 
 #include "core/error.h"
 #include "dem/contact_law.h"
+#include "dem/lanes.h"
 #include "dem/parallel.h"
 
 #include <algorithm>
@@ -142,20 +143,7 @@ struct PairSink
 // variant (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar
 // path. The wall contacts of the same law use the same lane law (linearLawLanes, WallBatch).
 // ---------------------------------------------------------------------------------------------
-// The four-lane variant is compiled for x86-64-v3 (AVX2, FMA unused: -ffp-contract=off), unless
-// the whole build already targets a CPU that has it (VERIDEM_NATIVE): then the attribute would
-// be a narrower target than its callees' and GCC could not inline them.
-#if defined(__AVX2__) && defined(__FMA__) && defined(__BMI2__)
-#define VERIDEM_AVX2_TARGET
-#else
-#define VERIDEM_AVX2_TARGET [[gnu::target("arch=x86-64-v3")]]
-#endif
-
-using Lanes2 = double __attribute__((vector_size(16)));
-using Lanes4 = double __attribute__((vector_size(32)));
-using Index4 = long long __attribute__((vector_size(32)));
-
-template <class V> constexpr std::size_t kWidth = sizeof(V) / sizeof(double);
+using namespace lanes; // Lanes2, Lanes4, Index4, kWidth, load, store (dem/lanes.h)
 
 // The helpers are always inlined, so that they are compiled for the instruction set of the
 // kernel variant that calls them.
@@ -193,17 +181,6 @@ template <class M> VERIDEM_HOT_INLINE bool allLanes(const M& mask)
     }
     else
         return (mask[0] & mask[1]) != 0;
-}
-
-template <class V> VERIDEM_HOT_INLINE V load(const double* a)
-{
-    V v;
-    std::memcpy(&v, a, sizeof v);
-    return v;
-}
-template <class V> VERIDEM_HOT_INLINE void store(double* a, const V& v)
-{
-    std::memcpy(a, &v, sizeof v);
 }
 
 /// Four contacts' x, y, z lanes -> one (x, y, z, 0) vector per contact: unpacks within 128-bit

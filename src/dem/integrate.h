@@ -21,30 +21,45 @@ struct Motion
     Real sinceBuild2 = 0, sinceActiveBuild2 = 0;
 };
 
-/// v += dt/2 a; w += dt/2 alpha; x += dt v. Measures, as it writes x, how far the particles are
-/// from `reference` (the neighbour list's motion check, without a second pass over the positions
-/// and a second parallel region); if reference.built is null, returns zero motion.
-inline Motion kickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
-                        NeighborList::MotionReference reference)
+/// Particles [begin, end): v += dt/2 a; w += dt/2 alpha; x += dt v, folding each one's squared
+/// displacement from the two `reference` positions into `m` (skipped if reference.built is null).
+inline Motion kickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
+                             NeighborList::MotionReference reference, std::size_t begin, std::size_t end,
+                             Motion m)
 {
     const Real half = 0.5 * dt;
+    for (std::size_t i = begin; i < end; ++i)
+    {
+        p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
+        p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
+        p.position[i] += dt * p.velocity[i];
+        if (reference.built)
+        {
+            m.sinceBuild2 = std::max(m.sinceBuild2, lengthSquared(p.position[i] - reference.built[i]));
+            m.sinceActiveBuild2 =
+                std::max(m.sinceActiveBuild2, lengthSquared(p.position[i] - reference.activeBuilt[i]));
+        }
+    }
+    return m;
+}
+
+/// kickDriftRange in four AVX2 lanes (integrate.cpp): the same operations in the same order, so
+/// the same bits. Only on a CPU with AVX2 (laneKernelName() == "avx2").
+Motion kickDriftLanes(ParticleStore& p, const Vec3& gravity, Real dt, NeighborList::MotionReference reference,
+                      std::size_t begin, std::size_t end);
+
+/// v += dt/2 a; w += dt/2 alpha; x += dt v for all particles. Measures, as it writes x, how far
+/// the particles are from `reference` (the neighbour list's motion check, without a second pass
+/// over the positions and a second parallel region); if reference.built is null, returns zero
+/// motion. `lanes`: the loop runs in AVX2 lanes (kickDriftLanes).
+inline Motion kickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
+                        NeighborList::MotionReference reference, bool lanes)
+{
     const std::size_t n = p.size();
     const auto range = [&](std::size_t begin, std::size_t end)
     {
-        Motion m;
-        for (std::size_t i = begin; i < end; ++i)
-        {
-            p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
-            p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
-            p.position[i] += dt * p.velocity[i];
-            if (reference.built)
-            {
-                m.sinceBuild2 = std::max(m.sinceBuild2, lengthSquared(p.position[i] - reference.built[i]));
-                m.sinceActiveBuild2 =
-                    std::max(m.sinceActiveBuild2, lengthSquared(p.position[i] - reference.activeBuilt[i]));
-            }
-        }
-        return m;
+        return lanes ? kickDriftLanes(p, gravity, dt, reference, begin, end)
+                     : kickDriftRange(p, gravity, dt, reference, begin, end, Motion{});
     };
     const int chunks = std::min(loopThreads(n), 64);
     if (chunks == 1)
@@ -71,7 +86,7 @@ inline void recordFirstNonFinite(const ParticleStore& p, StepHealth& health)
 
 /// Particles [begin, end): v += dt/2 a; w += dt/2 alpha. Returns false if some position or
 /// velocity of the range is not finite (recordFirstNonFinite finds it).
-inline bool kick(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end)
+inline bool kickRange(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end)
 {
     const Real half = 0.5 * dt;
     const Vec3 g = gravity; // (a copy: a store to a particle could alias the reference)
@@ -102,6 +117,17 @@ inline bool kick(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t beg
         finite = finite & (probe == 0.0);
     }
     return finite;
+}
+
+/// kickRange in four AVX2 lanes (integrate.cpp): the same operations and bits. Only on a CPU
+/// with AVX2.
+bool kickLanes(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end);
+
+/// kickRange, in AVX2 lanes if `lanes` (kickLanes).
+inline bool kick(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end,
+                 bool lanes)
+{
+    return lanes ? kickLanes(p, gravity, dt, begin, end) : kickRange(p, gravity, dt, begin, end);
 }
 
 /// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry

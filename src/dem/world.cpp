@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 
 namespace veridem::dem
 {
@@ -99,7 +100,7 @@ constexpr std::size_t kFinishBlock = 512;
 /// the final half kick v(t+dt) = v(t+dt/2) + dt/2 a(t+dt). Each particle's operations, and the
 /// order of the health record, are those of one pass over the range. Returns the wall health and
 /// sets `finite` to false if some state of the range is not finite.
-ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t end, bool& finite)
+ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t end, bool lanes, bool& finite)
 {
     ContactHealth health{0, 0, false, 0};
     finite = true;
@@ -111,14 +112,14 @@ ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t 
         health.touching += walls.touching;
         if (walls.found && walls.maxOverlapRatio > health.maxOverlapRatio) // first of the largest
             health = {walls.maxOverlapRatio, walls.worstParticle, true, health.touching};
-        finite = kick(world.particles, world.gravity, dt, s, e) && finite;
+        finite = kick(world.particles, world.gravity, dt, s, e, lanes) && finite;
     }
     return health;
 }
 
 /// Stage 4, one pass over the particles, in chunks (one per thread); health is combined in
-/// chunk order.
-void finishParticles(World& world, Real dt)
+/// chunk order. `lanes`: the kick runs in AVX2 lanes.
+void finishParticles(World& world, Real dt, bool lanes)
 {
     ParticleStore& p = world.particles;
     const std::size_t n = p.size();
@@ -128,12 +129,12 @@ void finishParticles(World& world, Real dt)
         addCrossBlockForces(world, 0, n);
         const ContactHealth walls = computeWallForces(world, dt, 0, n);
         mergeWallHealth(world.health, &walls, 1);
-        world.health.finite = kick(p, world.gravity, dt, 0, n);
+        world.health.finite = kick(p, world.gravity, dt, 0, n, lanes);
     }
     else if (chunks == 1) // no parallel region, no chunk arrays
     {
         bool finite = true;
-        const ContactHealth walls = finishRange(world, dt, 0, n, finite);
+        const ContactHealth walls = finishRange(world, dt, 0, n, lanes, finite);
         mergeWallHealth(world.health, &walls, 1);
         world.health.finite = finite;
     }
@@ -143,12 +144,21 @@ void finishParticles(World& world, Real dt)
         bool finite[64]{};
         parallelChunks(n, chunks,
                        [&](int c, std::size_t begin, std::size_t end)
-                       { walls[c] = finishRange(world, dt, begin, end, finite[c]); });
+                       { walls[c] = finishRange(world, dt, begin, end, lanes, finite[c]); });
         mergeWallHealth(world.health, walls, chunks);
         world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
     }
     if (!world.health.finite)
         recordFirstNonFinite(p, world.health);
+}
+
+/// True if the integration loops run in AVX2 lanes (integrate.cpp, the same bits as the scalar
+/// loops): the lane kernels are on (World::batchedContactKernel), the variant in use is "avx2",
+/// and there are at least four particles (one ball keeps the scalar loop).
+bool integrationInLanes(const World& world)
+{
+    return world.particles.size() >= 4 && world.batchedContactKernel &&
+           std::strcmp(laneKernelName(), "avx2") == 0;
 }
 
 } // namespace
@@ -187,9 +197,10 @@ void step(World& world, Real dt)
 
     StageClock clock(world.profile);
 
+    const bool lanes = integrationInLanes(world);
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
-        kickDrift(world.particles, world.gravity, dt,
-                  world.neighbors.motionReference(world.particles.size()));
+        kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
+                  lanes);
     moveWalls(world.walls, dt); // wall motion to t+dt
     clock.lap(&StepProfile::integration);
     if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
@@ -197,7 +208,7 @@ void step(World& world, Real dt)
     clock.lap(&StepProfile::neighbours);
     computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
     clock.lap(&StepProfile::pairForces);
-    finishParticles(world, dt); // 4. cross-block and wall contacts, then v(t+dt)
+    finishParticles(world, dt, lanes); // 4. cross-block and wall contacts, then v(t+dt)
     clock.lap(&StepProfile::particlePass);
 
     world.time += dt;

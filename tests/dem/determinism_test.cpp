@@ -3,6 +3,7 @@
 // particles' blocks and the slot order (neighbor_list.h), so the schedule cannot change the order
 // of any floating-point sum.
 #include "dem/forces.h"
+#include "dem/integrate.h"
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -129,6 +131,71 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
     }
     EXPECT_GE(variants, 1); // the portable variant runs everywhere
     ASSERT_TRUE(selectLaneKernel(initial));
+}
+
+/// Random particle state for the integration loops: n particles with velocities, spins, forces
+/// and torques of mixed signs and magnitudes.
+ParticleStore randomParticles(std::size_t n, std::mt19937& rng)
+{
+    std::uniform_real_distribution<Real> u(-1.0, 1.0);
+    const auto vec = [&](Real scale) { return Vec3{scale * u(rng), scale * u(rng), scale * u(rng)}; };
+    ParticleStore p;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        p.add(vec(0.05), vec(0.3), vec(200.0), 1e-3 * (1.0 + 0.5 * u(rng)), 2500, 0);
+        p.force.back() = vec(1e-3);
+        p.torque.back() = vec(1e-7);
+    }
+    return p;
+}
+
+/// The AVX2 integration loops (integrate.cpp) perform the scalar loops' operations: the same
+/// bits for every particle, including ranges that do not start or end on a group of four, the
+/// same largest displacements for the neighbour list's motion check, and the same verdict on a
+/// non-finite state.
+TEST(Determinism, IntegrationLanesMatchScalarLoops)
+{
+    const std::string variant = laneKernelName();
+    if (!selectLaneKernel("avx2")) // (only to ask whether this CPU runs AVX2)
+        GTEST_SKIP() << "this CPU has no AVX2";
+    ASSERT_TRUE(selectLaneKernel(variant));
+    std::mt19937 rng(7);
+    const std::size_t n = 23, begin = 3, end = 22; // 19 particles: four groups and 3 left over
+    const ParticleStore initial = randomParticles(n, rng);
+    std::vector<Vec3> built = initial.position, activeBuilt = initial.position;
+    std::uniform_real_distribution<Real> offset(-1e-4, 1e-4); // components of similar size
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        built[i] += Vec3{offset(rng), offset(rng), offset(rng)};
+        activeBuilt[i] += Vec3{offset(rng), offset(rng), offset(rng)};
+    }
+    const NeighborList::MotionReference reference{built.data(), activeBuilt.data()};
+    const Vec3 gravity{0.3, -0.2, -9.81};
+    const Real dt = 1e-5;
+
+    ParticleStore scalar = initial, lanes = initial;
+    const Motion scalarMotion = kickDriftRange(scalar, gravity, dt, reference, begin, end, Motion{});
+    const Motion lanesMotion = kickDriftLanes(lanes, gravity, dt, reference, begin, end);
+    EXPECT_TRUE(sameBits(lanes.position, scalar.position));
+    EXPECT_TRUE(sameBits(lanes.velocity, scalar.velocity));
+    EXPECT_TRUE(sameBits(lanes.angularVelocity, scalar.angularVelocity));
+    EXPECT_EQ(lanesMotion.sinceBuild2, scalarMotion.sinceBuild2);
+    EXPECT_EQ(lanesMotion.sinceActiveBuild2, scalarMotion.sinceActiveBuild2);
+    EXPECT_GT(scalarMotion.sinceBuild2, 0.0);
+
+    EXPECT_TRUE(kickRange(scalar, gravity, dt, begin, end));
+    EXPECT_TRUE(kickLanes(lanes, gravity, dt, begin, end));
+    EXPECT_TRUE(sameBits(lanes.velocity, scalar.velocity));
+    EXPECT_TRUE(sameBits(lanes.angularVelocity, scalar.angularVelocity));
+
+    // A non-finite component, inside a group of four and in the part left over.
+    for (const std::size_t bad : {std::size_t{9}, std::size_t{20}})
+    {
+        ParticleStore a = initial, b = initial;
+        a.torque[bad].y = b.torque[bad].y = std::numeric_limits<Real>::infinity();
+        EXPECT_FALSE(kickRange(a, gravity, dt, begin, end)) << bad;
+        EXPECT_FALSE(kickLanes(b, gravity, dt, begin, end)) << bad;
+    }
 }
 
 /// The block sums (forces.cpp) add every touching contact exactly once, +F on i and -F on j, with
