@@ -287,6 +287,63 @@ template <class V> VERIDEM_HOT_INLINE Lanes3<V> gatherVec3(const Vec3* a, const 
         return {gather<V>(a, index, &Vec3::x), gather<V>(a, index, &Vec3::y), gather<V>(a, index, &Vec3::z)};
 }
 
+/// The touching-candidate sub-list of a chunk as the selection pass reads it (array bases in one
+/// place: NeighborList::activeSlots/activeFirst/activeSecond, the particles' positions [m] and
+/// radii [m], the slots' mayBeActive flags).
+struct Candidates
+{
+    const std::uint32_t* slot;
+    const std::uint32_t* first;
+    const std::uint32_t* second;
+    const Vec3* position;
+    const Real* radius;
+    const std::uint8_t* mayBeActive;
+    std::size_t end; // one past the chunk's last candidate
+};
+
+/// The selection pass from candidate a on: appends each touching one (slot, i, j) to the batch at
+/// m, and records at opened[o] each one found open that may have been in contact (its history is
+/// cleared by the caller). Stops at the chunk's end, when the batch or `opened` is full (kBatch),
+/// or at the first candidate of a new block (first particle >= zeroedEnd), whose sums the caller
+/// zeroes first. Returns where it stopped. Branch-free per candidate but for those stops; calls
+/// nothing, so the array bases stay in registers.
+VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::size_t a, std::size_t zeroedEnd,
+                                                    PairBatch& b, std::size_t& m, std::uint32_t* opened,
+                                                    std::size_t& o)
+{
+    // Everything in locals: GCC cannot tell that the batch stores leave m, o and c unchanged.
+    const std::uint32_t *const slot = c.slot, *const first = c.first, *const second = c.second;
+    const Vec3* const position = c.position;
+    const Real* const radius = c.radius;
+    const std::uint8_t* const mayBeActive = c.mayBeActive;
+    const std::size_t end = c.end, last = c.end - 1;
+    std::size_t touchingEnd = m, openedEnd = o;
+    for (; a < end && touchingEnd < kBatch && openedEnd < kBatch; ++a)
+    {
+        const std::uint32_t k = slot[a], i = first[a], j = second[a];
+        if (__builtin_expect(i >= zeroedEnd, 0)) // a new block
+            break;
+        // The partner's position kPrefetchAhead candidates on, into cache: j jumps across the
+        // Morton order (the neighbours above and below), and on a 512 KB L2 its rows often come
+        // from L3. (The kernel fetches the rest of its rows ahead.)
+        __builtin_prefetch(&position[second[std::min(a + kPrefetchAhead, last)]]);
+        const Vec3 &xi = position[i], &xj = position[j];
+        const Real ri = radius[i], rj = radius[j];
+        const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
+        const Real touching = ri + rj;
+        const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
+        b.slot[touchingEnd] = k;
+        b.i[touchingEnd] = i;
+        b.j[touchingEnd] = j;
+        touchingEnd += isTouching;
+        opened[openedEnd] = k; // kept if it was in contact and is no more (rare)
+        openedEnd += mayBeActive[k] & static_cast<std::uint8_t>(!isTouching);
+    }
+    m = touchingEnd;
+    o = openedEnd;
+    return a;
+}
+
 /// The pair parameters in lanes: broadcast once per kernel call if there is one material pair
 /// (`uniform`), else loaded per lane from a LaneParams.
 template <class Lanes> struct LaneConstants
@@ -610,6 +667,60 @@ void wallContactsPortable(WallBatch& b, std::size_t count, Real dt, const PairPa
     wallContactsLanes<Lanes2>(b, count, dt, uniform);
 }
 
+/// selectTouchingScalar with the distance test of four candidates in AVX2 lanes (the same IEEE
+/// operations, so the same choices); the bookkeeping stays per candidate, branch-free.
+VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::size_t a, std::size_t zeroedEnd,
+                                                   PairBatch& b, std::size_t& m, std::uint32_t* opened,
+                                                   std::size_t& o)
+{
+    const std::uint32_t* const slot = c.slot;
+    const Vec3* const position = c.position;
+    const Real* const radius = c.radius;
+    const std::uint8_t* const mayBeActive = c.mayBeActive;
+    const std::size_t end = c.end;
+    std::size_t touchingEnd = m, openedEnd = o;
+    for (; a + 4 <= end && touchingEnd + 4 <= kBatch && openedEnd + 4 <= kBatch; a += 4)
+    {
+        const std::uint32_t* const laneI = c.first + a;
+        const std::uint32_t* const laneJ = c.second + a;
+        if (laneI[3] >= zeroedEnd) // a new block starts in these four (first is ascending)
+            break;
+        const std::uint32_t* const ahead = c.second + std::min(a + kPrefetchAhead, end - 4);
+        for (std::size_t l = 0; l < 4; ++l)
+            __builtin_prefetch(&position[ahead[l]]);
+        const Lanes3<Lanes4> xi = gatherVec3<Lanes4>(position, laneI),
+                             xj = gatherVec3<Lanes4>(position, laneJ);
+        const Lanes4 sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
+        const Lanes4 touching = gather<Lanes4>(radius, laneI) + gather<Lanes4>(radius, laneJ);
+        const Lanes4 distance2 = sx * sx + sy * sy + sz * sz;
+        const unsigned touchingLanes = static_cast<unsigned>(
+            _mm256_movemask_pd(reinterpret_cast<__m256d>(distance2 < touching * touching)));
+        for (std::size_t l = 0; l < 4; ++l)
+        {
+            const std::uint32_t k = slot[a + l];
+            const unsigned isTouching = (touchingLanes >> l) & 1u;
+            b.slot[touchingEnd] = k;
+            b.i[touchingEnd] = laneI[l];
+            b.j[touchingEnd] = laneJ[l];
+            touchingEnd += isTouching;
+            opened[openedEnd] = k;
+            openedEnd += mayBeActive[k] & (isTouching ^ 1u);
+        }
+    }
+    m = touchingEnd;
+    o = openedEnd;
+    return selectTouchingScalar(c, a, zeroedEnd, b, m, opened, o); // up to a full batch, or a new block
+}
+
+std::size_t selectTouchingPortable(const Candidates& c, std::size_t a, std::size_t zeroedEnd, PairBatch& b,
+                                   std::size_t& m, std::uint32_t* opened, std::size_t& o)
+{
+    return selectTouchingScalar(c, a, zeroedEnd, b, m, opened, o);
+}
+
+using SelectPass = std::size_t (*)(const Candidates&, std::size_t, std::size_t, PairBatch&, std::size_t&,
+                                   std::uint32_t*, std::size_t&);
+
 using WallKernel = void (*)(WallBatch&, std::size_t, Real, const PairParams*);
 
 using PairKernel = void (*)(const World&, const PairSink&, Real, std::size_t, WorstOverlap&, PairBatch&,
@@ -620,6 +731,7 @@ struct KernelVariant
     const char* name;
     PairKernel kernel;
     WallKernel wallKernel;
+    SelectPass select;
     bool (*supported)();
 };
 
@@ -634,8 +746,8 @@ bool cpuHasAvx2()
 }
 
 const KernelVariant kVariants[] = {
-    {"avx2", pairContactsAvx2, wallContactsAvx2, cpuHasAvx2},
-    {"portable", pairContactsPortable, wallContactsPortable, [] { return true; }}};
+    {"avx2", pairContactsAvx2, wallContactsAvx2, selectTouchingAvx2, cpuHasAvx2},
+    {"portable", pairContactsPortable, wallContactsPortable, selectTouchingPortable, [] { return true; }}};
 
 /// The variant in use: VERIDEM_KERNEL if set (and supported), else the widest the CPU runs.
 const KernelVariant*& currentVariant()
@@ -766,6 +878,7 @@ void computePairForces(World& world, Real dt)
 
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
+    const SelectPass select = currentVariant()->select;
     ContactHealth health[kMaxChunks];
     // One chunk: its blocks' candidates, selected and evaluated in batches.
     const auto pairChunk = [&](int chunk, std::size_t, std::size_t)
@@ -811,41 +924,19 @@ void computePairForces(World& world, Real dt)
             return;
         }
         // One pass: each touching slot is appended (branch-free) to a batch, which runs when
-        // full. The inner loop calls nothing, so that its pointers stay in registers (a call
-        // inside it, however rare, made GCC reload them from the stack every candidate):
-        // it stops at a block's first candidate (whose sums are zeroed outside), and slots
-        // found open are only recorded, then opened outside (openSlot touches no slot of the
-        // batch, and nothing in this pass reads what it writes again).
+        // full (selectTouching*). The selection stops at a block's first candidate, whose sums
+        // are zeroed here, and slots found open are only recorded, then opened here (openSlot
+        // touches no slot of the batch, and nothing in this pass reads what it writes again).
+        const Candidates selection{
+            candidates, list.activeFirst.data(), list.activeSecond.data(), position, radius, mayBeActive,
+            end};
         PairBatch batch;
         std::uint32_t opened[kBatch];
         std::size_t m = 0, o = 0;
         std::size_t a = begin;
         while (a < end)
         {
-            // m and o grow by at most one per candidate: kBatch - max(m, o) more fill neither.
-            const std::size_t stop = std::min(end, a + (kBatch - std::max(m, o)));
-            for (; a < stop; ++a)
-            {
-                const std::uint32_t k = candidates[a], i = first[k], j = second[k];
-                if (__builtin_expect(i >= zeroedEnd, 0)) // a new block
-                    break;
-                // The partner's position kPrefetchAhead candidates on, into cache: j jumps
-                // across the Morton order (the neighbours above and below), and on a 512 KB L2
-                // its rows often come from L3. (The kernel fetches the rest of its rows
-                // ahead.)
-                __builtin_prefetch(&position[second[candidates[std::min(a + kPrefetchAhead, end - 1)]]]);
-                const Vec3 &xi = position[i], &xj = position[j];
-                const Real ri = radius[i], rj = radius[j];
-                const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-                const Real touching = ri + rj;
-                const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
-                batch.slot[m] = k;
-                batch.i[m] = i;
-                batch.j[m] = j;
-                m += isTouching;
-                opened[o] = k; // kept if it was in contact and is no more (rare)
-                o += mayBeActive[k] & static_cast<std::uint8_t>(!isTouching);
-            }
+            a = select(selection, a, zeroedEnd, batch, m, opened, o);
             for (std::size_t q = 0; q < o; ++q)
                 list.openSlot(opened[q]);
             o = 0;

@@ -54,6 +54,8 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
     ++activeRebuilds_;
     positionAtActiveBuild_.assign(particles.position.begin(), particles.position.end());
     activeSlots.clear();
+    activeFirst.clear();
+    activeSecond.clear();
     const Vec3* const x = particles.position.data();
     const Real* const r = particles.radius.data();
     for (std::size_t k = 0; k < first.size(); ++k)
@@ -61,7 +63,11 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
         const std::uint32_t i = first[k], j = second[k];
         const Real reach = r[i] + r[j] + innerSkin;
         if (lengthSquared(x[i] - x[j]) < reach * reach)
+        {
             activeSlots.push_back(static_cast<std::uint32_t>(k));
+            activeFirst.push_back(i);
+            activeSecond.push_back(j);
+        }
         else if (mayBeActive[k])
             openSlot(k); // left out, so not touching: the contact opened (or never closed)
     }
@@ -73,7 +79,8 @@ std::size_t NeighborList::memoryBytes() const
     return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) +
            bytes(effectiveMass) + bytes(mayBeActive) + bytes(firstStart) + bytes(deferredIndex) +
            bytes(deferredForce) + bytes(deferredTorque) + bytes(incomingStart) + bytes(incoming) +
-           bytes(positionAtBuild_);
+           bytes(forceSum) + bytes(torqueSum) + bytes(activeSlots) + bytes(activeFirst) +
+           bytes(activeSecond) + bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)

@@ -85,6 +85,9 @@ class NeighborList
     // result is the same bits as visiting every slot, since open slots contribute nothing.
     Real innerSkin = 0; // [m]
     std::vector<std::uint32_t> activeSlots;
+    // first[] and second[] of each candidate (activeFirst[a] = first[activeSlots[a]]): the force
+    // loop reads them in sequence, four at a time, instead of through the slot.
+    std::vector<std::uint32_t> activeFirst, activeSecond;
 
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;
