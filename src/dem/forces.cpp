@@ -986,9 +986,8 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
             p.force[i] = p.torque[i] = Vec3{};
         return;
     }
-    const bool hasIncoming = !pairs.incoming.empty();
+    const bool hasIncoming = !pairs.deferredForce.empty();
     const std::uint32_t* const start = pairs.incomingStart.data();
-    const std::uint32_t* const incoming = pairs.incoming.data();
     const Vec3* const deferredForce = pairs.deferredForce.data();
     const Vec3* const deferredTorque = pairs.deferredTorque.data();
     for (std::size_t i = begin; i < end; ++i)
@@ -998,8 +997,8 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
         if (hasIncoming)
             for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
             {
-                force += deferredForce[incoming[e]];
-                torque += deferredTorque[incoming[e]];
+                force += deferredForce[e];
+                torque += deferredTorque[e];
             }
         p.force[i] = force;
         p.torque[i] = torque;

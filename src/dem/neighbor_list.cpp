@@ -78,9 +78,9 @@ std::size_t NeighborList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) +
            bytes(effectiveMass) + bytes(mayBeActive) + bytes(firstStart) + bytes(deferredIndex) +
-           bytes(deferredForce) + bytes(deferredTorque) + bytes(incomingStart) + bytes(incoming) +
-           bytes(forceSum) + bytes(torqueSum) + bytes(activeSlots) + bytes(activeFirst) +
-           bytes(activeSecond) + bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
+           bytes(deferredForce) + bytes(deferredTorque) + bytes(incomingStart) + bytes(forceSum) +
+           bytes(torqueSum) + bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) +
+           bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -104,7 +104,6 @@ void NeighborList::rebuild(const ParticleStore& particles)
         deferredIndex.clear();
         deferredForce.clear();
         deferredTorque.clear();
-        incoming.clear();
         return;
     }
 
@@ -234,29 +233,21 @@ void NeighborList::rebuild(const ParticleStore& particles)
         effectiveMass[k] = mi * mj / (mi + mj);
     }
 
-    // Cross-block slots (the second particle in a later block), numbered in slot order, and for
-    // each particle its incoming entries, ascending.
+    // Cross-block slots (the second particle in a later block), numbered by second particle and
+    // then slot: each particle's incoming entries are contiguous and in slot order.
     deferredIndex.resize(pairCount);
-    std::uint32_t deferredCount = 0;
     for (std::size_t k = 0; k < pairCount; ++k)
-    {
-        const bool cross = first[k] / kBlockParticles != second[k] / kBlockParticles;
-        deferredIndex[k] = cross ? deferredCount : kInBlock;
-        if (cross)
-        {
-            ++deferredCount;
+        if (first[k] / kBlockParticles != second[k] / kBlockParticles)
             ++incomingStart[second[k] + 1];
-        }
-    }
     for (std::size_t i = 0; i < n; ++i)
         incomingStart[i + 1] += incomingStart[i];
+    const std::uint32_t deferredCount = incomingStart[n];
     deferredForce.assign(deferredCount, Vec3{});
     deferredTorque.assign(deferredCount, Vec3{});
-    incoming.resize(deferredCount);
     std::vector<std::uint32_t> fill(incomingStart.begin(), incomingStart.end() - 1);
     for (std::size_t k = 0; k < pairCount; ++k)
-        if (deferredIndex[k] != kInBlock)
-            incoming[fill[second[k]]++] = deferredIndex[k];
+        deferredIndex[k] =
+            first[k] / kBlockParticles != second[k] / kBlockParticles ? fill[second[k]]++ : kInBlock;
 }
 
 } // namespace veridem::dem
