@@ -141,7 +141,7 @@ struct PairSink
 // path (pairContactScalar + evaluateContact) in the same order, branches become selects, and no
 // multiply-add is fused (-ffp-contract=off), so the bits are those of the scalar path on every
 // variant (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar
-// path. The wall contacts of the same law use the same lane law (linearLawLanes, WallBatch).
+// path. The wall contacts of the same law use the same lane law (linearLawLanes, LawBatch).
 // ---------------------------------------------------------------------------------------------
 using namespace lanes; // Lanes2, Lanes4, Index4, kWidth, load, store (dem/lanes.h)
 
@@ -242,10 +242,9 @@ struct LaneParams
 };
 
 /// A batch of touching pair contacts: their slots and particles (the kernel loads the rest
-/// straight into lanes), and per-lane pair parameters when there is more than one material pair.
+/// straight into lanes).
 struct PairBatch
 {
-    LaneParams law;
     std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
 };
 
@@ -456,6 +455,52 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, 
     return {normalForce, ftx, fty, ftz, newSpringX, newSpringY, newSpringZ};
 }
 
+/// A batch of touching contacts for the lane law, pairs or walls: the contact inputs as the scalar
+/// path computes them (pairContactScalar, wallContactInput), one array per component, and the
+/// law's outputs.
+struct LawBatch
+{
+    LaneParams law;
+    alignas(32) double nx[kBatch], ny[kBatch], nz[kBatch], overlap[kBatch], rvx[kBatch], rvy[kBatch],
+        rvz[kBatch], mass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    alignas(32) double normalForce[kBatch], ftx[kBatch], fty[kBatch], ftz[kBatch], springX[kBatch],
+        springY[kBatch], springZ[kBatch];
+    std::uint32_t slot[kBatch], particle[kBatch];
+};
+
+/// The contact law of the contacts [0, count) of `b` in lanes (the same law and bits as
+/// evaluateContact; a wall is a partner of infinite mass, so m* = m).
+template <class Lanes>
+VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+{
+    constexpr std::size_t kLanes = kWidth<Lanes>;
+    const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
+    for (std::size_t m = count; m < padded; ++m) // padding lanes repeat the last contact
+    {
+        for (double* a : {b.nx, b.ny, b.nz, b.overlap, b.rvx, b.rvy, b.rvz, b.mass, b.hx, b.hy, b.hz})
+            a[m] = a[count - 1];
+        if (!uniform)
+            for (double* a : {b.law.kn, b.law.ktRatio, b.law.rate, b.law.fromRatio, b.law.etaRatio, b.law.mu})
+                a[m] = a[count - 1];
+    }
+    const LaneConstants<Lanes> constants(uniform);
+    for (std::size_t m = 0; m < padded; m += kLanes)
+    {
+        const LaneLaw<Lanes> out =
+            linearLawLanes<Lanes>(constants, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m),
+                                  load<Lanes>(b.nz + m), load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m),
+                                  load<Lanes>(b.rvy + m), load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m),
+                                  load<Lanes>(b.hx + m), load<Lanes>(b.hy + m), load<Lanes>(b.hz + m));
+        store(b.normalForce + m, out.normalForce);
+        store(b.ftx + m, out.ftx);
+        store(b.fty + m, out.fty);
+        store(b.ftz + m, out.ftz);
+        store(b.springX + m, out.springX);
+        store(b.springY + m, out.springY);
+        store(b.springZ + m, out.springZ);
+    }
+}
+
 /// Adds contact q of batch `b` to the sink: force f [N] on i and -f on j, torques ti on i and tj
 /// on j [N m] (vectors (x, y, z, 0)), or j's share to the slot's deferred entry; stores the new
 /// tangential spring [m] and marks the slot mayBeActive.
@@ -507,15 +552,19 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     const Vec3* const angularVelocity = p.angularVelocity.data();
     const Real* const radius = p.radius.data();
     const Real* const slotMass = list.effectiveMass.data();
+    // In three passes over the batch, group by group: the contact inputs, the law, the scatter.
+    // Each pass's body is short enough for the out-of-order core to overlap one group's chain of
+    // divisions and square roots with the next group's (one pass of ~600 instructions a group,
+    // more than the reorder buffer, left them in sequence); the inputs and outputs stay in L1.
+    LawBatch law;
+    alignas(32) double leverIs[kBatch], leverJs[kBatch], minRadii[kBatch];
     if (!uniform)
         for (std::size_t m = 0; m < padded; ++m)
-            b.law.set(m, world.pairs(p.material[b.i[m]], p.material[b.j[m]]));
+            law.law.set(m, world.pairs(p.material[b.i[m]], p.material[b.j[m]]));
 
     const Lanes zero = {}, one = zero + 1.0, negativeZero = -zero;
-    const LaneConstants<Lanes> constants(uniform);
     // The partners' velocity rows and the slots' springs, kFetchAhead lanes before their use (the
-    // selection pass fetched the positions): one group of lanes takes ~300 cycles, more than an
-    // L3 hit.
+    // selection pass fetched the positions).
     constexpr std::size_t kFetchAhead = 2 * kLanes;
     const auto fetch = [&](std::size_t lane)
     {
@@ -525,12 +574,12 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     };
     for (std::size_t m = 0; m < std::min(kFetchAhead, padded); ++m)
         fetch(m);
+    // 1. Inputs (as pairContactScalar).
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         if (m + kFetchAhead < padded)
             for (std::size_t l = 0; l < kLanes; ++l)
                 fetch(m + kFetchAhead + l);
-        // Geometry (as pairContactScalar).
         const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
         const Lanes3<Lanes> xi = gatherVec3<Lanes>(position, laneI), xj = gatherVec3<Lanes>(position, laneJ);
         const Lanes sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
@@ -544,7 +593,6 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes nx = positive ? sx * inverseDistance : zero;
         const Lanes ny = positive ? sy * inverseDistance : zero;
         const Lanes nz = positive ? sz * inverseDistance : one;
-        const Lanes overlap = touching - distance;
         const Lanes share = positive ? distance * distance * reciprocal : zero;
         const Lanes leverI = ri * share, leverJ = rj * share;
         // Particle and slot data straight into lanes (gatherVec3: paired 16-byte loads).
@@ -555,30 +603,47 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         const Lanes az = wi.z * leverI + wj.z * leverJ;
         const Lanes3<Lanes> vi = gatherVec3<Lanes>(velocity, laneI), vj = gatherVec3<Lanes>(velocity, laneJ);
         const Lanes dvx = vi.x - vj.x, dvy = vi.y - vj.y, dvz = vi.z - vj.z;
-        const Lanes rvx = dvx - (ay * nz - az * ny);
-        const Lanes rvy = dvy - (az * nx - ax * nz);
-        const Lanes rvz = dvz - (ax * ny - ay * nx);
-        const Lanes effectiveMass = gather<Lanes>(slotMass, laneK); // m_i m_j / (m_i + m_j), per slot
-
         const Lanes3<Lanes> h = gatherVec3<Lanes>(sink.spring, laneK);
-        const LaneLaw<Lanes> out = linearLawLanes<Lanes>(constants, b.law, m, dt, nx, ny, nz, overlap, rvx,
-                                                         rvy, rvz, effectiveMass, h.x, h.y, h.z);
-        const Lanes normalForce = out.normalForce, ftx = out.ftx, fty = out.fty, ftz = out.ftz;
-        const Lanes newSpringX = out.springX, newSpringY = out.springY, newSpringZ = out.springZ;
+        store(law.nx + m, nx);
+        store(law.ny + m, ny);
+        store(law.nz + m, nz);
+        store(law.overlap + m, touching - distance);
+        store(law.rvx + m, dvx - (ay * nz - az * ny));
+        store(law.rvy + m, dvy - (az * nx - ax * nz));
+        store(law.rvz + m, dvz - (ax * ny - ay * nx));
+        store(law.mass + m, gather<Lanes>(slotMass, laneK)); // m_i m_j / (m_i + m_j), per slot
+        store(law.hx + m, h.x);
+        store(law.hy + m, h.y);
+        store(law.hz + m, h.z);
+        store(leverIs + m, leverI);
+        store(leverJs + m, leverJ);
+        store(minRadii + m, rj < ri ? rj : ri);
+    }
+
+    // 2. The law (lawLanes, as the wall contacts').
+    lawLanes<Lanes>(law, padded, dt, uniform);
+
+    // 3. Forces and torques, scattered in lane (= slot) order; the health record.
+    for (std::size_t m = 0; m < padded; m += kLanes)
+    {
+        const Lanes nx = load<Lanes>(law.nx + m), ny = load<Lanes>(law.ny + m), nz = load<Lanes>(law.nz + m);
+        const Lanes normalForce = load<Lanes>(law.normalForce + m), ftx = load<Lanes>(law.ftx + m),
+                    fty = load<Lanes>(law.fty + m), ftz = load<Lanes>(law.ftz + m);
+        const Lanes leverI = load<Lanes>(leverIs + m), leverJ = load<Lanes>(leverJs + m);
         const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
         // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j, rolling = 0 here.
         const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
         const Lanes tix = zero - leverI * ttx, tiy = zero - leverI * tty, tiz = zero - leverI * ttz;
         const Lanes tjx = negativeZero - leverJ * ttx, tjy = negativeZero - leverJ * tty,
                     tjz = negativeZero - leverJ * ttz;
-        const Lanes minRadius = rj < ri ? rj : ri;
 
-        // Scatter, in lane (= slot) order: one (x, y, z, 0) vector per contact and sum.
+        // Scatter: one (x, y, z, 0) vector per contact and sum.
         Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
         transpose(fx, fy, fz, force);
         transpose(tix, tiy, tiz, torqueI);
         transpose(tjx, tjy, tjz, torqueJ);
-        transpose(newSpringX, newSpringY, newSpringZ, spring);
+        transpose(load<Lanes>(law.springX + m), load<Lanes>(law.springY + m), load<Lanes>(law.springZ + m),
+                  spring);
         const std::size_t lanes = std::min(kLanes, count - m);
         if (lanes == kLanes) // (a constant trip count: unrolled, every lane index a constant)
         {
@@ -592,6 +657,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
 
         // The health record, in lane order. One comparison first: the running ratio only grows,
         // so a lane that does not exceed it now cannot exceed it after an earlier lane's update.
+        const Lanes overlap = load<Lanes>(law.overlap + m), minRadius = load<Lanes>(minRadii + m);
         if (anyLane(overlap > worst.ratio * minRadius))
             for (std::size_t l = 0; l < lanes; ++l)
                 if (worst.exceededBy(overlap[l], minRadius[l]))
@@ -612,59 +678,14 @@ void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std
     pairContactsLanes<Lanes2>(world, sink, dt, count, worst, b, uniform);
 }
 
-/// A batch of touching wall contacts for the lane law: the contact inputs as the scalar path
-/// computes them (wallContactInput), one array per component, and the law's outputs.
-struct WallBatch
+VERIDEM_AVX2_TARGET void wallContactsAvx2(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
 {
-    LaneParams law;
-    alignas(32) double nx[kBatch], ny[kBatch], nz[kBatch], overlap[kBatch], rvx[kBatch], rvy[kBatch],
-        rvz[kBatch], mass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
-    alignas(32) double normalForce[kBatch], ftx[kBatch], fty[kBatch], ftz[kBatch], springX[kBatch],
-        springY[kBatch], springZ[kBatch];
-    std::uint32_t slot[kBatch], particle[kBatch];
-};
-
-/// The contact law of the wall contacts [0, count) of `b` in lanes (the walls' partner is of
-/// infinite mass, so m* = m; the same law and bits as evaluateContact).
-template <class Lanes>
-VERIDEM_HOT_INLINE void wallContactsLanes(WallBatch& b, std::size_t count, Real dt, const PairParams* uniform)
-{
-    constexpr std::size_t kLanes = kWidth<Lanes>;
-    const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
-    for (std::size_t m = count; m < padded; ++m) // padding lanes repeat the last contact
-    {
-        for (double* a : {b.nx, b.ny, b.nz, b.overlap, b.rvx, b.rvy, b.rvz, b.mass, b.hx, b.hy, b.hz})
-            a[m] = a[count - 1];
-        if (!uniform)
-            for (double* a : {b.law.kn, b.law.ktRatio, b.law.rate, b.law.fromRatio, b.law.etaRatio, b.law.mu})
-                a[m] = a[count - 1];
-    }
-    const LaneConstants<Lanes> constants(uniform);
-    for (std::size_t m = 0; m < padded; m += kLanes)
-    {
-        const LaneLaw<Lanes> out =
-            linearLawLanes<Lanes>(constants, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m),
-                                  load<Lanes>(b.nz + m), load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m),
-                                  load<Lanes>(b.rvy + m), load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m),
-                                  load<Lanes>(b.hx + m), load<Lanes>(b.hy + m), load<Lanes>(b.hz + m));
-        store(b.normalForce + m, out.normalForce);
-        store(b.ftx + m, out.ftx);
-        store(b.fty + m, out.fty);
-        store(b.ftz + m, out.ftz);
-        store(b.springX + m, out.springX);
-        store(b.springY + m, out.springY);
-        store(b.springZ + m, out.springZ);
-    }
+    lawLanes<Lanes4>(b, count, dt, uniform);
 }
 
-VERIDEM_AVX2_TARGET void wallContactsAvx2(WallBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
 {
-    wallContactsLanes<Lanes4>(b, count, dt, uniform);
-}
-
-void wallContactsPortable(WallBatch& b, std::size_t count, Real dt, const PairParams* uniform)
-{
-    wallContactsLanes<Lanes2>(b, count, dt, uniform);
+    lawLanes<Lanes2>(b, count, dt, uniform);
 }
 
 /// selectTouchingScalar with the distance test of four candidates in AVX2 lanes (the same IEEE
@@ -721,7 +742,7 @@ std::size_t selectTouchingPortable(const Candidates& c, std::size_t a, std::size
 using SelectPass = std::size_t (*)(const Candidates&, std::size_t, std::size_t, PairBatch&, std::size_t&,
                                    std::uint32_t*, std::size_t&);
 
-using WallKernel = void (*)(WallBatch&, std::size_t, Real, const PairParams*);
+using WallKernel = void (*)(LawBatch&, std::size_t, Real, const PairParams*);
 
 using PairKernel = void (*)(const World&, const PairSink&, Real, std::size_t, WorstOverlap&, PairBatch&,
                             const PairParams*);
@@ -1054,7 +1075,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     ContactHealth health{0, 0, false, 0};
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
     const WallKernel kernel = currentVariant()->wallKernel;
-    WallBatch b;
+    LawBatch b;
     std::size_t m = 0;
     const auto run = [&]
     {
