@@ -48,7 +48,7 @@ if [ -n "${VERIDEM_ROUNDS:-}" ]; then
   veridem_rates() { # bench binary, threads -> "whole-run best-window" particle-steps/s
     "$1" --steps "$steps" --threads "$2" --file "$shared/settled_bed_20k.xyz" |
       awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") w = $i}
-           /best window/ {b = $(NF - 1)} END {print w, b}'
+           /best window/ {b = $6} END {print w, b}'
   }
   lammps_rates() { # LAMMPS log of 100-step runs -> "whole-run best-window" particle-steps/s
     awk '/^Loop time of/ {t += $4; s += $9; if ($12 * $9 / $4 > b) b = $12 * $9 / $4; a = $12}
