@@ -968,9 +968,9 @@ void computePairForces(World& world, Real dt)
                 touchingCount += m;
                 m = 0;
             }
-            if (a < end && first[candidates[a]] >= zeroedEnd)
+            if (a < end && selection.first[a] >= zeroedEnd)
                 // (the batch holds earlier blocks' contacts only)
-                zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[candidates[a]]));
+                zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(selection.first[a]));
         }
         zeroSums(sink, zeroedEnd, endParticle);
         health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
