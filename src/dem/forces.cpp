@@ -81,18 +81,18 @@ struct PairSink
 {
     NeighborList::Sum* force;           // per-particle sums [N]
     NeighborList::Sum* torque;          // [N m]
-    const std::uint32_t* deferredIndex; // per slot, or NeighborList::kInBlock
+    const std::uint32_t* deferredIndex; // per candidate, or NeighborList::kInBlock
     Vec3* deferredForce;                // on the second particle of a cross-block slot [N]
     Vec3* deferredTorque;               // [N m]
-    Vec3* spring;                       // tangential spring per slot [m]
+    Vec3* spring;                       // tangential spring per candidate [m]
     std::uint8_t* mayBeActive;
 
     explicit PairSink(World& world)
         : force(world.neighbors.forceSum.data()), torque(world.neighbors.torqueSum.data()),
-          deferredIndex(world.neighbors.deferredIndex.data()),
+          deferredIndex(world.neighbors.activeDeferred.data()),
           deferredForce(world.neighbors.deferredForce.data()),
-          deferredTorque(world.neighbors.deferredTorque.data()),
-          spring(world.neighbors.tangentialSpring.data()), mayBeActive(world.neighbors.mayBeActive.data())
+          deferredTorque(world.neighbors.deferredTorque.data()), spring(world.neighbors.activeSpring.data()),
+          mayBeActive(world.neighbors.activeMayBeActive.data())
     {
     }
 
@@ -109,7 +109,8 @@ struct PairSink
         sum.z -= v.z;
     }
 
-    /// Adds the contact of slot k: force f [N] on i and -f on j, torques ti on i and tj on j [N m].
+    /// Adds the contact of candidate k: force f [N] on i and -f on j, torques ti on i and tj on j
+    /// [N m].
     void add(std::uint32_t k, std::uint32_t i, std::uint32_t j, const Vec3& f, const Vec3& ti,
              const Vec3& tj) const
     {
@@ -241,11 +242,11 @@ struct LaneParams
     }
 };
 
-/// A batch of touching pair contacts: their slots and particles (the kernel loads the rest
-/// straight into lanes).
+/// A batch of touching pair contacts: their candidate indices (NeighborList::activeSlots) and
+/// particles (the kernel loads the rest straight into lanes).
 struct PairBatch
 {
-    std::uint32_t slot[kBatch], i[kBatch], j[kBatch];
+    std::uint32_t candidate[kBatch], i[kBatch], j[kBatch];
 };
 
 /// Lanes l = a[index[l]].*field (element loads and inserts, no staging through memory).
@@ -291,7 +292,6 @@ template <class V> VERIDEM_HOT_INLINE Lanes3<V> gatherVec3(const Vec3* a, const 
 /// radii [m], the slots' mayBeActive flags).
 struct Candidates
 {
-    const std::uint32_t* slot;
     const std::uint32_t* first;
     const std::uint32_t* second;
     const Vec3* position;
@@ -300,7 +300,7 @@ struct Candidates
     std::size_t end; // one past the chunk's last candidate
 };
 
-/// The selection pass from candidate a on: appends each touching one (slot, i, j) to the batch at
+/// The selection pass from candidate a on: appends each touching one (a, i, j) to the batch at
 /// m, and records at opened[o] each one found open that may have been in contact (its history is
 /// cleared by the caller). Stops at the chunk's end, when the batch or `opened` is full (kBatch),
 /// or at the first candidate of a new block (first particle >= zeroedEnd), whose sums the caller
@@ -311,7 +311,7 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
                                                     std::size_t& o)
 {
     // Everything in locals: GCC cannot tell that the batch stores leave m, o and c unchanged.
-    const std::uint32_t *const slot = c.slot, *const first = c.first, *const second = c.second;
+    const std::uint32_t *const first = c.first, *const second = c.second;
     const Vec3* const position = c.position;
     const Real* const radius = c.radius;
     const std::uint8_t* const mayBeActive = c.mayBeActive;
@@ -319,7 +319,7 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
     std::size_t touchingEnd = m, openedEnd = o;
     for (; a < end && touchingEnd < kBatch && openedEnd < kBatch; ++a)
     {
-        const std::uint32_t k = slot[a], i = first[a], j = second[a];
+        const std::uint32_t k = static_cast<std::uint32_t>(a), i = first[a], j = second[a];
         if (__builtin_expect(i >= zeroedEnd, 0)) // a new block
             break;
         // The partner's position kPrefetchAhead candidates on, into cache: j jumps across the
@@ -331,7 +331,7 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
         const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
         const Real touching = ri + rj;
         const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
-        b.slot[touchingEnd] = k;
+        b.candidate[touchingEnd] = k;
         b.i[touchingEnd] = i;
         b.j[touchingEnd] = j;
         touchingEnd += isTouching;
@@ -508,7 +508,7 @@ VERIDEM_HOT_INLINE void scatterContact(const PairSink& sink, const PairBatch& b,
                                        const Lanes4& f, const Lanes4& ti, const Lanes4& tj,
                                        const Lanes4& spring)
 {
-    const std::uint32_t k = b.slot[q], i = b.i[q], j = b.j[q];
+    const std::uint32_t k = b.candidate[q], i = b.i[q], j = b.j[q];
     sink.mayBeActive[k] = 1;
     std::memcpy(&sink.spring[k].x, &spring, 3 * sizeof(double)); // x, y, z of (x, y, z, 0)
     addInto(&sink.force[i].x, f);
@@ -543,7 +543,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     for (std::size_t m = count; m < padded; ++m)
     {
         // Padding lanes repeat the last contact; their results are not written.
-        b.slot[m] = b.slot[count - 1];
+        b.candidate[m] = b.candidate[count - 1];
         b.i[m] = b.i[count - 1];
         b.j[m] = b.j[count - 1];
     }
@@ -551,7 +551,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     const Vec3* const velocity = p.velocity.data();
     const Vec3* const angularVelocity = p.angularVelocity.data();
     const Real* const radius = p.radius.data();
-    const Real* const slotMass = list.effectiveMass.data();
+    const Real* const candidateMass = list.activeMass.data();
     // In three passes over the batch, group by group: the contact inputs, the law, the scatter.
     // Each pass's body is short enough for the out-of-order core to overlap one group's chain of
     // divisions and square roots with the next group's (one pass of ~600 instructions a group,
@@ -570,7 +570,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     {
         __builtin_prefetch(&velocity[b.j[lane]]);
         __builtin_prefetch(&angularVelocity[b.j[lane]]);
-        __builtin_prefetch(&sink.spring[b.slot[lane]]);
+        __builtin_prefetch(&sink.spring[b.candidate[lane]]);
     };
     for (std::size_t m = 0; m < std::min(kFetchAhead, padded); ++m)
         fetch(m);
@@ -580,7 +580,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         if (m + kFetchAhead < padded)
             for (std::size_t l = 0; l < kLanes; ++l)
                 fetch(m + kFetchAhead + l);
-        const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.slot + m;
+        const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.candidate + m;
         const Lanes3<Lanes> xi = gatherVec3<Lanes>(position, laneI), xj = gatherVec3<Lanes>(position, laneJ);
         const Lanes sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
         const Lanes ri = gather<Lanes>(radius, laneI), rj = gather<Lanes>(radius, laneJ);
@@ -611,7 +611,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         store(law.rvx + m, dvx - (ay * nz - az * ny));
         store(law.rvy + m, dvy - (az * nx - ax * nz));
         store(law.rvz + m, dvz - (ax * ny - ay * nx));
-        store(law.mass + m, gather<Lanes>(slotMass, laneK)); // m_i m_j / (m_i + m_j), per slot
+        store(law.mass + m, gather<Lanes>(candidateMass, laneK)); // m_i m_j / (m_i + m_j)
         store(law.hx + m, h.x);
         store(law.hy + m, h.y);
         store(law.hz + m, h.z);
@@ -694,7 +694,6 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
                                                    PairBatch& b, std::size_t& m, std::uint32_t* opened,
                                                    std::size_t& o)
 {
-    const std::uint32_t* const slot = c.slot;
     const Vec3* const position = c.position;
     const Real* const radius = c.radius;
     const std::uint8_t* const mayBeActive = c.mayBeActive;
@@ -718,9 +717,9 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
             _mm256_movemask_pd(reinterpret_cast<__m256d>(distance2 < touching * touching)));
         for (std::size_t l = 0; l < 4; ++l)
         {
-            const std::uint32_t k = slot[a + l];
+            const std::uint32_t k = static_cast<std::uint32_t>(a + l);
             const unsigned isTouching = (touchingLanes >> l) & 1u;
-            b.slot[touchingEnd] = k;
+            b.candidate[touchingEnd] = k;
             b.i[touchingEnd] = laneI[l];
             b.j[touchingEnd] = laneJ[l];
             touchingEnd += isTouching;
@@ -796,12 +795,12 @@ bool lanesApply(const World& world)
     return all;
 }
 
-/// One touching contact through the general contact law (any model), added into the sink.
+/// Touching candidate k through the general contact law (any model), added into the sink.
 void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
                        WorstOverlap& worst)
 {
     const ParticleStore& p = world.particles;
-    const std::uint32_t i = list.first[k], j = list.second[k];
+    const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
     sink.mayBeActive[k] = 1;
     const Vec3 separation = p.position[i] - p.position[j];
     const Real ri = p.radius[i], rj = p.radius[j];
@@ -822,7 +821,7 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     in.relativeVelocity = p.velocity[i] - p.velocity[j] -
                           cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
     in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
-    in.effectiveMass = list.effectiveMass[k];
+    in.effectiveMass = list.activeMass[k];
     if (extra.effectiveRadius)
         in.effectiveRadius = ri * rj / touching;
     if (extra.spinInertia)
@@ -831,9 +830,9 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
         in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
                                    1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
 
-    ContactHistory history = list.history(k);
+    ContactHistory history = list.candidateHistory(k);
     const ContactOutput out = evaluateContact(params, in, history, dt);
-    list.setHistory(k, history);
+    list.setCandidateHistory(k, history);
 
     const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
     sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,
@@ -918,39 +917,37 @@ void computePairForces(World& world, Real dt)
         WorstOverlap worst{0, 0, false};
         std::size_t touchingCount = 0;
         // Array bases in locals (the byte-sized mayBeActive stores could alias the vectors).
-        const std::uint32_t* const first = list.first.data();
-        const std::uint32_t* const second = list.second.data();
+        const std::uint32_t* const first = list.activeFirst.data();
+        const std::uint32_t* const second = list.activeSecond.data();
         const Vec3* const position = p.position.data();
         const Real* const radius = p.radius.data();
-        const std::uint32_t* const candidates = active; // (not through the closure)
         std::uint8_t* const mayBeActive = sink.mayBeActive;
         if (!allBatchable)
         {
             for (std::size_t a = begin; a < end; ++a)
             {
-                const std::uint32_t k = candidates[a], i = first[k], j = second[k];
+                const std::uint32_t i = first[a], j = second[a];
                 if (i >= zeroedEnd)
                     zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
                 const Real touching = radius[i] + radius[j];
                 if (lengthSquared(position[i] - position[j]) < touching * touching)
                 {
-                    pairContactScalar(world, list, sink, dt, k, worst);
+                    pairContactScalar(world, list, sink, dt, a, worst);
                     ++touchingCount;
                 }
-                else if (mayBeActive[k])
-                    list.openSlot(k);
+                else if (mayBeActive[a])
+                    list.openCandidate(a);
             }
             zeroSums(sink, zeroedEnd, endParticle);
             health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
             return;
         }
-        // One pass: each touching slot is appended (branch-free) to a batch, which runs when
+        // One pass: each touching candidate is appended (branch-free) to a batch, which runs when
         // full (selectTouching*). The selection stops at a block's first candidate, whose sums
-        // are zeroed here, and slots found open are only recorded, then opened here (openSlot
-        // touches no slot of the batch, and nothing in this pass reads what it writes again).
-        const Candidates selection{
-            candidates, list.activeFirst.data(), list.activeSecond.data(), position, radius, mayBeActive,
-            end};
+        // are zeroed here, and candidates found open are only recorded, then opened here
+        // (openCandidate touches no candidate of the batch, and nothing in this pass reads what
+        // it writes again).
+        const Candidates selection{first, second, position, radius, mayBeActive, end};
         PairBatch batch;
         std::uint32_t opened[kBatch];
         std::size_t m = 0, o = 0;
@@ -959,7 +956,7 @@ void computePairForces(World& world, Real dt)
         {
             a = select(selection, a, zeroedEnd, batch, m, opened, o);
             for (std::size_t q = 0; q < o; ++q)
-                list.openSlot(opened[q]);
+                list.openCandidate(opened[q]);
             o = 0;
             if (m == kBatch || a == end)
             {
@@ -968,9 +965,9 @@ void computePairForces(World& world, Real dt)
                 touchingCount += m;
                 m = 0;
             }
-            if (a < end && selection.first[a] >= zeroedEnd)
+            if (a < end && first[a] >= zeroedEnd)
                 // (the batch holds earlier blocks' contacts only)
-                zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(selection.first[a]));
+                zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[a]));
         }
         zeroSums(sink, zeroedEnd, endParticle);
         health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};

@@ -38,17 +38,15 @@ class NeighborList
     Real skin = 0;                   // extra search distance beyond touching [m]
     bool keepRollingHistory = false; // store a rolling spring per slot (EPSD rolling model in use)
 
-    std::vector<std::uint32_t> first;   // i of each pair (sorted, i < j)
-    std::vector<std::uint32_t> second;  // j of each pair
-    std::vector<Vec3> tangentialSpring; // history per pair slot [m]
-    std::vector<Vec3> rollingSpring;    // history per pair slot [N m] (empty unless keepRollingHistory)
-
-    // Per-slot effective mass m* = m_i m_j / (m_i + m_j) [kg], set on a rebuild (the contact law's
-    // expression, so the same bits), for the lane path.
-    std::vector<Real> effectiveMass;
-
-    // Whether the slot's history may be non-zero (cleared when the slot is found open, so an open
-    // slot is written once, not every step).
+    std::vector<std::uint32_t> first;  // i of each pair (sorted, i < j)
+    std::vector<std::uint32_t> second; // j of each pair
+    // History per pair slot: tangential spring [m], rolling spring [N m] (empty unless
+    // keepRollingHistory), and whether it may be non-zero (cleared when the slot is found open, so
+    // an open slot is written once, not every step). While the candidate sub-list below is live,
+    // its candidates' history lives in the sub-list's own arrays (activeSpring, ...), and these
+    // hold it as of the sub-list's build; syncSlotHistory() brings them up to date.
+    std::vector<Vec3> tangentialSpring;
+    std::vector<Vec3> rollingSpring;
     std::vector<std::uint8_t> mayBeActive;
 
     // Per-particle sums of the pair loop, force [N] and torque [N m], padded to four doubles so
@@ -80,14 +78,20 @@ class NeighborList
     // order, the slots whose gap was below `innerSkin` when it was built; it is rebuilt from the
     // slots when some particle has moved more than innerSkin/2 since, so a slot left out cannot be
     // touching and the force loop visits only these. A settled bed has ~2.6 candidates per particle (2.3
-    // touching) instead of ~4.9 slots. innerSkin adapts, starting from skin/4: doubled (up to skin) when the
+    // touching) instead of ~4.9 slots. innerSkin adapts, starting from skin/16: doubled (up to skin) when the
     // sub-list lived fewer than 8 steps, halved (down to skin/64) when it lived more than 128. The
     // result is the same bits as visiting every slot, since open slots contribute nothing.
     Real innerSkin = 0; // [m]
     std::vector<std::uint32_t> activeSlots;
-    // first[] and second[] of each candidate (activeFirst[a] = first[activeSlots[a]]): the force
-    // loop reads them in sequence, four at a time, instead of through the slot.
+    // Per candidate a (slot activeSlots[a]), what the force loop reads and writes, in sequence
+    // instead of scattered over all slots: first[] and second[]; the live history (tangential and
+    // rolling spring, mayBeActive); m* = m_i m_j / (m_i + m_j) [kg] (the contact law's expression,
+    // so the same bits); the slot's deferredIndex.
     std::vector<std::uint32_t> activeFirst, activeSecond;
+    std::vector<Vec3> activeSpring, activeRolling;
+    std::vector<std::uint8_t> activeMayBeActive;
+    std::vector<Real> activeMass;
+    std::vector<std::uint32_t> activeDeferred;
 
     /// True if some particle moved more than skin/2 since the last build (or never built).
     bool needsRebuild(const ParticleStore& particles) const;
@@ -128,13 +132,32 @@ class NeighborList
     void openSlot(std::size_t k)
     {
         setHistory(k, ContactHistory{});
-        if (deferredIndex[k] != kInBlock)
-        {
-            deferredForce[deferredIndex[k]] = Vec3{};
-            deferredTorque[deferredIndex[k]] = Vec3{};
-        }
+        zeroDeferred(deferredIndex[k]);
         mayBeActive[k] = 0;
     }
+
+    /// History of candidate a (the live copy, see activeSpring) as the contact law takes it.
+    ContactHistory candidateHistory(std::size_t a) const
+    {
+        return {activeSpring[a], keepRollingHistory ? activeRolling[a] : Vec3{}};
+    }
+    void setCandidateHistory(std::size_t a, const ContactHistory& h)
+    {
+        activeSpring[a] = h.tangentialSpring;
+        if (keepRollingHistory)
+            activeRolling[a] = h.rollingSpring;
+    }
+    /// Candidate a is found open: openSlot for its live copy.
+    void openCandidate(std::size_t a)
+    {
+        setCandidateHistory(a, ContactHistory{});
+        zeroDeferred(activeDeferred[a]);
+        activeMayBeActive[a] = 0;
+    }
+    /// Copies the candidates' live history into the slot arrays (tangentialSpring, rollingSpring,
+    /// mayBeActive). The list does so itself before it rebuilds; call it before reading those
+    /// arrays between steps (tests, output).
+    void syncSlotHistory();
 
     std::size_t size() const { return first.size(); }
     std::size_t rebuildCount() const { return rebuilds_; }
@@ -143,6 +166,16 @@ class NeighborList
     std::size_t memoryBytes() const;
 
   private:
+    void zeroDeferred(std::uint32_t entry)
+    {
+        if (entry != kInBlock)
+        {
+            deferredForce[entry] = Vec3{};
+            deferredTorque[entry] = Vec3{};
+        }
+    }
+
+    bool activeLive_ = false; // the candidates' arrays hold the live history of their slots
     std::vector<Vec3> positionAtBuild_;
     std::vector<Vec3> positionAtActiveBuild_;
     bool activeStale_ = true;
