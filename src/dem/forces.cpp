@@ -855,18 +855,16 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
 
 } // namespace
 
-void computePairForces(World& world, Real dt)
+namespace
+{
+
+/// computePairForces for a world with particles and pair slots.
+void pairForcesOfSlots(World& world, Real dt)
 {
     ParticleStore& p = world.particles;
     NeighborList& list = world.neighbors;
-    world.health.maxOverlapRatio = 0;
-    world.health.touchingPairs = 0;
     const std::size_t n = p.size();
-    if (n == 0)
-        return;
     const std::size_t pairCount = list.size();
-    if (pairCount == 0) // one ball on a turntable: no sums to fill (addCrossBlockForces zeroes F, T)
-        return;
     const bool allBatchable = lanesApply(world);
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
 
@@ -976,6 +974,18 @@ void computePairForces(World& world, Real dt)
     foldHealth(world.health, health, chunks, world.health.touchingPairs);
 }
 
+} // namespace
+
+void computePairForces(World& world, Real dt)
+{
+    world.health.maxOverlapRatio = 0;
+    world.health.touchingPairs = 0;
+    // (Small, so that it inlines into the step: one ball on a turntable has no pair slots and no
+    // sums to fill; addCrossBlockForces zeroes its force and torque.)
+    if (world.particles.size() > 0 && world.neighbors.size() > 0)
+        pairForcesOfSlots(world, dt);
+}
+
 const char* laneKernelName()
 {
     return currentVariant()->name;
@@ -992,18 +1002,14 @@ bool selectLaneKernel(const std::string& name)
     return false;
 }
 
-void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
+namespace
+{
+
+/// addCrossBlockForces for a world with pair slots.
+void crossBlockSums(World& world, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
     const NeighborList& pairs = world.neighbors;
-    if (pairs.forceSum.size() != p.size()) // no list built (no particles)
-        return;
-    if (pairs.size() == 0) // no pair slots (one ball on a turntable): the sums were not written
-    {
-        for (std::size_t i = begin; i < end; ++i)
-            p.force[i] = p.torque[i] = Vec3{};
-        return;
-    }
     const bool hasIncoming = !pairs.deferredForce.empty();
     const std::uint32_t* const start = pairs.incomingStart.data();
     const Vec3* const deferredForce = pairs.deferredForce.data();
@@ -1021,6 +1027,23 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
         p.force[i] = force;
         p.torque[i] = torque;
     }
+}
+
+} // namespace
+
+void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
+{
+    ParticleStore& p = world.particles;
+    const NeighborList& pairs = world.neighbors;
+    if (pairs.forceSum.size() != p.size()) // no list built (no particles)
+        return;
+    if (pairs.size() == 0) // no pair slots (one ball on a turntable): the sums were not written
+    {
+        for (std::size_t i = begin; i < end; ++i)
+            p.force[i] = p.torque[i] = Vec3{};
+        return;
+    }
+    crossBlockSums(world, begin, end);
 }
 
 namespace
