@@ -11,6 +11,7 @@
 #include "dem/models/tangential.h"
 
 #include <cmath>
+#include <vector>
 
 namespace veridem::dem
 {
@@ -34,6 +35,21 @@ struct ContactHistory
     Vec3 tangentialSpring; // xi [m]
     Vec3 rollingSpring;    // EPSD elastic torque [N m]
 };
+
+/// Entry k of history kept as parallel arrays (the contact lists'): the tangential spring, and
+/// the rolling spring only if `keepRolling` (an EPSD rolling model is in use; else it is empty).
+inline ContactHistory historyAt(const std::vector<Vec3>& tangential, const std::vector<Vec3>& rolling,
+                                bool keepRolling, std::size_t k)
+{
+    return {tangential[k], keepRolling ? rolling[k] : Vec3{}};
+}
+inline void storeHistoryAt(std::vector<Vec3>& tangential, std::vector<Vec3>& rolling, bool keepRolling,
+                           std::size_t k, const ContactHistory& h)
+{
+    tangential[k] = h.tangentialSpring;
+    if (keepRolling)
+        rolling[k] = h.rollingSpring;
+}
 
 struct ContactOutput
 {

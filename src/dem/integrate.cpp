@@ -79,6 +79,20 @@ VERIDEM_HOT_INLINE Lanes4 fartherOf(const Lanes4& far, const Lanes4 (&x)[3], con
     return far < length2 ? length2 : far;
 }
 
+/// Row r of four particles' half kick from i: v + half (F/m + g) and w + (half / I) T, as the
+/// scalar loops compute them.
+struct KickedRows
+{
+    Lanes4 velocity, angularVelocity;
+};
+VERIDEM_HOT_INLINE KickedRows halfKickRow(const IntegrationArrays& a, std::size_t i, int r, Real half,
+                                          const Spread& inverseMass, const Spread& halfInverseInertia,
+                                          const GravityRows& g)
+{
+    return {loadRow(a.velocity, i, r) + half * (loadRow(a.force, i, r) * inverseMass.row[r] + g.row[r]),
+            loadRow(a.angularVelocity, i, r) + halfInverseInertia.row[r] * loadRow(a.torque, i, r)};
+}
+
 /// std::max over the lanes, from `m` (lane order does not matter: no NaN is ever taken).
 Real foldMax(Real m, const Lanes4& lanes)
 {
@@ -95,30 +109,22 @@ VERIDEM_AVX2_TARGET Motion kickDriftLanes(ParticleStore& p, const Vec3& gravity,
 {
     const Real half = 0.5 * dt;
     const GravityRows g(gravity);
-    Vec3* const position = p.position.data();
-    Vec3* const velocity = p.velocity.data();
-    Vec3* const angularVelocity = p.angularVelocity.data();
-    const Vec3* const force = p.force.data();
-    const Vec3* const torque = p.torque.data();
-    const Real* const invMass = p.invMass.data();
-    const Real* const invInertia = p.invInertia.data();
+    const IntegrationArrays a(p);
     Lanes4 farBuilt = {}, farActive = {};
     std::size_t i = begin;
     for (; i + 4 <= end; i += 4)
     {
-        const Spread inverseMass(lanes::load<Lanes4>(invMass + i));
-        const Spread halfInverseInertia(half * lanes::load<Lanes4>(invInertia + i));
+        const Spread inverseMass(lanes::load<Lanes4>(a.invMass + i));
+        const Spread halfInverseInertia(half * lanes::load<Lanes4>(a.invInertia + i));
         Lanes4 x[3];
         for (int r = 0; r < 3; ++r)
         {
             // v += half (F/m + g); w += (half / I) T; x += dt v, as kickDriftRange.
-            const Lanes4 v =
-                loadRow(velocity, i, r) + half * (loadRow(force, i, r) * inverseMass.row[r] + g.row[r]);
-            storeRow(velocity, i, r, v);
-            storeRow(angularVelocity, i, r,
-                     loadRow(angularVelocity, i, r) + halfInverseInertia.row[r] * loadRow(torque, i, r));
-            x[r] = loadRow(position, i, r) + dt * v;
-            storeRow(position, i, r, x[r]);
+            const KickedRows kicked = halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g);
+            storeRow(a.velocity, i, r, kicked.velocity);
+            storeRow(a.angularVelocity, i, r, kicked.angularVelocity);
+            x[r] = loadRow(a.position, i, r) + dt * kicked.velocity;
+            storeRow(a.position, i, r, x[r]);
         }
         if (reference.built)
         {
@@ -135,30 +141,22 @@ VERIDEM_AVX2_TARGET bool kickLanes(ParticleStore& p, const Vec3& gravity, Real d
 {
     const Real half = 0.5 * dt;
     const GravityRows g(gravity);
-    const Vec3* const position = p.position.data();
-    Vec3* const velocity = p.velocity.data();
-    Vec3* const angularVelocity = p.angularVelocity.data();
-    const Vec3* const force = p.force.data();
-    const Vec3* const torque = p.torque.data();
-    const Real* const invMass = p.invMass.data();
-    const Real* const invInertia = p.invInertia.data();
+    const IntegrationArrays a(p);
     // The finiteness probe of kickRange: a sum of 0 * a over every component is 0 exactly when
     // all are finite (0 * inf and 0 * NaN are NaN), whatever the order of the sum.
     Lanes4 probe = {};
     std::size_t i = begin;
     for (; i + 4 <= end; i += 4)
     {
-        const Spread inverseMass(lanes::load<Lanes4>(invMass + i));
-        const Spread halfInverseInertia(half * lanes::load<Lanes4>(invInertia + i));
+        const Spread inverseMass(lanes::load<Lanes4>(a.invMass + i));
+        const Spread halfInverseInertia(half * lanes::load<Lanes4>(a.invInertia + i));
         for (int r = 0; r < 3; ++r)
         {
-            const Lanes4 v =
-                loadRow(velocity, i, r) + half * (loadRow(force, i, r) * inverseMass.row[r] + g.row[r]);
-            const Lanes4 w =
-                loadRow(angularVelocity, i, r) + halfInverseInertia.row[r] * loadRow(torque, i, r);
-            storeRow(velocity, i, r, v);
-            storeRow(angularVelocity, i, r, w);
-            probe = probe + (0.0 * loadRow(position, i, r) + 0.0 * v + 0.0 * w);
+            const KickedRows kicked = halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g);
+            storeRow(a.velocity, i, r, kicked.velocity);
+            storeRow(a.angularVelocity, i, r, kicked.angularVelocity);
+            probe = probe +
+                    (0.0 * loadRow(a.position, i, r) + 0.0 * kicked.velocity + 0.0 * kicked.angularVelocity);
         }
     }
     const bool finite = probe[0] == 0.0 && probe[1] == 0.0 && probe[2] == 0.0 && probe[3] == 0.0;

@@ -21,6 +21,26 @@ struct Motion
     Real sinceBuild2 = 0, sinceActiveBuild2 = 0;
 };
 
+/// The arrays the integration loops read and write, their bases held in locals (GCC would reload
+/// them from the vectors after every store through one of them).
+struct IntegrationArrays
+{
+    Vec3* position;         // [m]
+    Vec3* velocity;         // [m/s]
+    Vec3* angularVelocity;  // [rad/s]
+    const Vec3* force;      // [N]
+    const Vec3* torque;     // [N m]
+    const Real* invMass;    // [1/kg]
+    const Real* invInertia; // [1/(kg m^2)]
+
+    explicit IntegrationArrays(ParticleStore& p)
+        : position(p.position.data()), velocity(p.velocity.data()), angularVelocity(p.angularVelocity.data()),
+          force(p.force.data()), torque(p.torque.data()), invMass(p.invMass.data()),
+          invInertia(p.invInertia.data())
+    {
+    }
+};
+
 /// Particles [begin, end): v += dt/2 a; w += dt/2 alpha; x += dt v, folding each one's squared
 /// displacement from the two `reference` positions into `m` (skipped if reference.built is null).
 inline Motion kickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
@@ -90,23 +110,20 @@ inline bool kickRange(ParticleStore& p, const Vec3& gravity, Real dt, std::size_
 {
     const Real half = 0.5 * dt;
     const Vec3 g = gravity; // (a copy: a store to a particle could alias the reference)
-    const Vec3* const position = p.position.data();
-    Vec3* const velocity = p.velocity.data();
-    Vec3* const angularVelocity = p.angularVelocity.data();
-    const Vec3* const force = p.force.data();
-    const Vec3* const torque = p.torque.data();
-    const Real* const invMass = p.invMass.data();
-    const Real* const invInertia = p.invInertia.data();
+    const IntegrationArrays a(p);
+    const Vec3* const position = a.position;
+    Vec3* const velocity = a.velocity;
+    Vec3* const angularVelocity = a.angularVelocity;
     bool finite = true;
     for (std::size_t i = begin; i < end; ++i)
     {
-        const Real im = invMass[i], halfInvInertia = half * invInertia[i];
-        const Real vx = velocity[i].x + half * (force[i].x * im + g.x),
-                   vy = velocity[i].y + half * (force[i].y * im + g.y),
-                   vz = velocity[i].z + half * (force[i].z * im + g.z);
-        const Real wx = angularVelocity[i].x + halfInvInertia * torque[i].x,
-                   wy = angularVelocity[i].y + halfInvInertia * torque[i].y,
-                   wz = angularVelocity[i].z + halfInvInertia * torque[i].z;
+        const Real im = a.invMass[i], halfInvInertia = half * a.invInertia[i];
+        const Real vx = velocity[i].x + half * (a.force[i].x * im + g.x),
+                   vy = velocity[i].y + half * (a.force[i].y * im + g.y),
+                   vz = velocity[i].z + half * (a.force[i].z * im + g.z);
+        const Real wx = angularVelocity[i].x + halfInvInertia * a.torque[i].x,
+                   wy = angularVelocity[i].y + halfInvInertia * a.torque[i].y,
+                   wz = angularVelocity[i].z + halfInvInertia * a.torque[i].z;
         velocity[i] = {vx, vy, vz};
         angularVelocity[i] = {wx, wy, wz};
         // 0 * a is 0 for every finite a and NaN for inf and NaN: one sum of nine such products

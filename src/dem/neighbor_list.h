@@ -119,40 +119,32 @@ class NeighborList
     /// History of slot k as the contact law takes it.
     ContactHistory history(std::size_t k) const
     {
-        return {tangentialSpring[k], keepRollingHistory ? rollingSpring[k] : Vec3{}};
+        return historyAt(tangentialSpring, rollingSpring, keepRollingHistory, k);
     }
     void setHistory(std::size_t k, const ContactHistory& h)
     {
-        tangentialSpring[k] = h.tangentialSpring;
-        if (keepRollingHistory)
-            rollingSpring[k] = h.rollingSpring;
+        storeHistoryAt(tangentialSpring, rollingSpring, keepRollingHistory, k, h);
     }
 
     /// Slot k is found open: its history is forgotten, its deferred entry (if any) zeroed.
     void openSlot(std::size_t k)
     {
-        setHistory(k, ContactHistory{});
-        zeroDeferred(deferredIndex[k]);
-        mayBeActive[k] = 0;
+        forget(tangentialSpring, rollingSpring, mayBeActive, k, deferredIndex[k]);
     }
 
     /// History of candidate a (the live copy, see activeSpring) as the contact law takes it.
     ContactHistory candidateHistory(std::size_t a) const
     {
-        return {activeSpring[a], keepRollingHistory ? activeRolling[a] : Vec3{}};
+        return historyAt(activeSpring, activeRolling, keepRollingHistory, a);
     }
     void setCandidateHistory(std::size_t a, const ContactHistory& h)
     {
-        activeSpring[a] = h.tangentialSpring;
-        if (keepRollingHistory)
-            activeRolling[a] = h.rollingSpring;
+        storeHistoryAt(activeSpring, activeRolling, keepRollingHistory, a, h);
     }
     /// Candidate a is found open: openSlot for its live copy.
     void openCandidate(std::size_t a)
     {
-        setCandidateHistory(a, ContactHistory{});
-        zeroDeferred(activeDeferred[a]);
-        activeMayBeActive[a] = 0;
+        forget(activeSpring, activeRolling, activeMayBeActive, a, activeDeferred[a]);
     }
     /// Copies the candidates' live history into the slot arrays (tangentialSpring, rollingSpring,
     /// mayBeActive). The list does so itself before it rebuilds; call it before reading those
@@ -166,12 +158,17 @@ class NeighborList
     std::size_t memoryBytes() const;
 
   private:
-    void zeroDeferred(std::uint32_t entry)
+    /// An open contact: entry `index` of the history arrays zeroed, its flag cleared, and its
+    /// deferred entry (if any) zeroed.
+    void forget(std::vector<Vec3>& tangential, std::vector<Vec3>& rolling, std::vector<std::uint8_t>& flag,
+                std::size_t index, std::uint32_t deferredEntry)
     {
-        if (entry != kInBlock)
+        storeHistoryAt(tangential, rolling, keepRollingHistory, index, ContactHistory{});
+        flag[index] = 0;
+        if (deferredEntry != kInBlock)
         {
-            deferredForce[entry] = Vec3{};
-            deferredTorque[entry] = Vec3{};
+            deferredForce[deferredEntry] = Vec3{};
+            deferredTorque[deferredEntry] = Vec3{};
         }
     }
 

@@ -39,13 +39,11 @@ class WallContactList
 
     ContactHistory history(std::size_t k) const
     {
-        return {tangentialSpring[k], keepRollingHistory ? rollingSpring[k] : Vec3{}};
+        return historyAt(tangentialSpring, rollingSpring, keepRollingHistory, k);
     }
     void setHistory(std::size_t k, const ContactHistory& h)
     {
-        tangentialSpring[k] = h.tangentialSpring;
-        if (keepRollingHistory)
-            rollingSpring[k] = h.rollingSpring;
+        storeHistoryAt(tangentialSpring, rollingSpring, keepRollingHistory, k, h);
     }
     /// Tangential spring of the contact (particle, wall) [m], e.g. to start a case in a loaded
     /// contact state after prepare(). Throws InputError if the particle is not near that wall.
