@@ -85,7 +85,7 @@ struct PairSink
     Vec3* deferredForce;                // on the second particle of a cross-block slot [N]
     Vec3* deferredTorque;               // [N m]
     Vec3* spring;                       // tangential spring per candidate [m]
-    std::uint8_t* mayBeActive;
+    std::uint8_t* mayBeActive;          // per candidate
 
     explicit PairSink(World& world)
         : force(world.neighbors.forceSum.data()), torque(world.neighbors.torqueSum.data()),
@@ -288,8 +288,8 @@ template <class V> VERIDEM_HOT_INLINE Lanes3<V> gatherVec3(const Vec3* a, const 
 }
 
 /// The touching-candidate sub-list of a chunk as the selection pass reads it (array bases in one
-/// place: NeighborList::activeSlots/activeFirst/activeSecond, the particles' positions [m] and
-/// radii [m], the slots' mayBeActive flags).
+/// place: NeighborList::activeFirst/activeSecond and activeMayBeActive, the particles' positions
+/// [m] and radii [m]).
 struct Candidates
 {
     const std::uint32_t* first;
@@ -503,7 +503,7 @@ VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const 
 
 /// Adds contact q of batch `b` to the sink: force f [N] on i and -f on j, torques ti on i and tj
 /// on j [N m] (vectors (x, y, z, 0)), or j's share to the slot's deferred entry; stores the new
-/// tangential spring [m] and marks the slot mayBeActive.
+/// tangential spring [m] and marks the candidate mayBeActive.
 VERIDEM_HOT_INLINE void scatterContact(const PairSink& sink, const PairBatch& b, std::size_t q,
                                        const Lanes4& f, const Lanes4& ti, const Lanes4& tj,
                                        const Lanes4& spring)
