@@ -66,8 +66,8 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
         else if (mayBeActive[k])
             openSlot(k); // left out, so not touching: the contact opened (or never closed)
     }
-    // The candidates' own arrays, sized exactly (a settled bed keeps ~2.6 per particle; the
-    // first sub-lists, with a wider inner skin, hold more).
+    // The candidates' own arrays, sized exactly (activeSlots, grown by push_back, up to twice
+    // over). A settled bed keeps ~2.6 candidates per particle; the first sub-lists hold more.
     const std::size_t count = activeSlots.size();
     const auto resize = [count](auto& v)
     {
