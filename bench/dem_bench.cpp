@@ -233,10 +233,13 @@ int main(int argc, char** argv)
         std::vector<double> windows; // seconds per window
         windows.reserve(static_cast<std::size_t>(o.steps / kWindow));
         auto windowStart = start;
-        for (long s = 0; s < o.steps; ++s)
+        for (long done = 0; done < o.steps;) // windows of kWindow steps, then the remainder
         {
-            step(world, dt);
-            if ((s + 1) % kWindow == 0)
+            const long count = std::min(kWindow, o.steps - done);
+            for (long s = 0; s < count; ++s)
+                step(world, dt);
+            done += count;
+            if (count == kWindow)
             {
                 const auto now = std::chrono::steady_clock::now();
                 windows.push_back(std::chrono::duration<double>(now - windowStart).count());

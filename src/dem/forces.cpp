@@ -216,12 +216,6 @@ VERIDEM_HOT_INLINE void subtractFrom(double* sum, const Lanes4& v)
     store(sum, load<Lanes4>(sum) - v);
 }
 
-/// True if pairs of these parameters may take the lane path (all pairs must, or none does).
-bool batchable(const PairParams& params)
-{
-    return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
-}
-
 constexpr std::size_t kPrefetchAhead = 16; // candidates between a prefetch and its use
 constexpr std::size_t kBatch = 64;         // contacts per batch (a multiple of every width); ~20 KB, in L1
 
@@ -785,14 +779,10 @@ const KernelVariant*& currentVariant()
 }
 
 /// True if every contact takes the lane path: the lane kernel is enabled and every material pair
-/// (walls included) is batchable.
+/// (walls included) takes the lane law (PairTable::allLaneLaw).
 bool lanesApply(const World& world)
 {
-    bool all = world.batchedContactKernel;
-    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
-        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
-            all = all && batchable(world.pairs(a, b));
-    return all;
+    return world.batchedContactKernel && world.pairs.allLaneLaw();
 }
 
 /// Touching candidate k through the general contact law (any model), added into the sink.

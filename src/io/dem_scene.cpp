@@ -265,8 +265,8 @@ void applyPairOverride(TableReader& t, dem::World& world)
         params.rollingDimensionless = 0;
     }
     t.finish();
-    world.pairs.at(ia, ib) = params;
-    world.pairs.at(ib, ia) = params;
+    world.pairs.set(ia, ib, params);
+    world.pairs.set(ib, ia, params);
 }
 
 void checkInitialOverlaps(dem::World& world, Real tolerance)
