@@ -36,6 +36,26 @@ bool NeighborList::checkMotion(std::size_t particleCount, Real largestMotion2, R
     return largestMotion2 > 0.25 * skin * skin;
 }
 
+namespace
+{
+
+std::uint64_t pairKey(std::uint32_t i, std::uint32_t j)
+{
+    return (std::uint64_t(i) << 32) | j;
+}
+
+/// v.resize(count), with the capacity grown to exactly count and never shrunk: re-allocating
+/// arrays of changing sizes every few hundred steps fragmented the heap (peak RSS +80 B/particle
+/// over 1000 bed steps).
+template <class V> void resizeExactly(V& v, std::size_t count)
+{
+    if (v.capacity() < count)
+        v.reserve(count);
+    v.resize(count);
+}
+
+} // namespace
+
 void NeighborList::refreshActiveSlots(const ParticleStore& particles)
 {
     ++activeAge_;
@@ -52,95 +72,142 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
     activeAge_ = 0;
     activeStale_ = false;
     ++activeRebuilds_;
-    syncSlotHistory(); // the live history back into the slots, then the new sub-list from them
     positionAtActiveBuild_.assign(particles.position.begin(), particles.position.end());
-    activeSlots.clear();
-    const Vec3* const x = particles.position.data();
-    const Real* const r = particles.radius.data();
-    for (std::size_t k = 0; k < first.size(); ++k)
-    {
-        const std::uint32_t i = first[k], j = second[k];
-        const Real reach = r[i] + r[j] + innerSkin;
-        if (lengthSquared(x[i] - x[j]) < reach * reach)
-            activeSlots.push_back(static_cast<std::uint32_t>(k));
-        else if (mayBeActive[k])
-            openSlot(k); // left out, so not touching: the contact opened (or never closed)
-    }
-    // The candidates' own arrays, sized exactly (activeSlots, grown by push_back, up to twice
-    // over). A settled bed keeps ~2.6 candidates per particle; the first sub-lists hold more.
+
+    const std::size_t oldCount = activeFirst.size();
+    selectCandidates(particles);
+    carryHistory(oldCount);
+
+    // The rest of each candidate's record, from its slot.
     const std::size_t count = activeSlots.size();
-    const auto resize = [count](auto& v)
-    {
-        // Grown to exactly count, never shrunk: re-allocating arrays of changing sizes every few
-        // hundred steps fragmented the heap (peak RSS +80 B/particle over 1000 bed steps).
-        if (v.capacity() < count)
-            v.reserve(count);
-        v.resize(count);
-    };
-    resize(activeSlots);
-    resize(activeFirst);
-    resize(activeSecond);
-    resize(activeSpring);
-    resize(activeMayBeActive);
-    resize(activeMass);
-    resize(activeDeferred);
-    if (keepRollingHistory)
-        resize(activeRolling);
-    else
-        activeRolling.clear();
+    resizeExactly(activeFirst, count);
+    resizeExactly(activeSecond, count);
+    resizeExactly(activeMass, count);
+    resizeExactly(activeDeferred, count);
     const Real* const mass = particles.mass.data();
     for (std::size_t a = 0; a < count; ++a)
     {
         const std::uint32_t k = activeSlots[a], i = first[k], j = second[k];
         activeFirst[a] = i;
         activeSecond[a] = j;
-        activeSpring[a] = tangentialSpring[k];
-        if (keepRollingHistory)
-            activeRolling[a] = rollingSpring[k];
-        activeMayBeActive[a] = mayBeActive[k];
         activeMass[a] = mass[i] * mass[j] / (mass[i] + mass[j]);
         activeDeferred[a] = deferredIndex[k];
     }
-    activeLive_ = true;
+    slotsRebuilt_ = false;
 }
 
-void NeighborList::syncSlotHistory()
+void NeighborList::selectCandidates(const ParticleStore& particles)
 {
-    if (!activeLive_)
-        return;
-    for (std::size_t a = 0; a < activeSlots.size(); ++a)
+    const Vec3* const x = particles.position.data();
+    const Real* const r = particles.radius.data();
+    const auto within = [&](std::size_t k)
     {
-        const std::uint32_t k = activeSlots[a];
-        tangentialSpring[k] = activeSpring[a];
-        if (keepRollingHistory)
-            rollingSpring[k] = activeRolling[a];
-        mayBeActive[k] = activeMayBeActive[a];
+        const std::uint32_t i = first[k], j = second[k];
+        const Real reach = r[i] + r[j] + innerSkin;
+        return lengthSquared(x[i] - x[j]) < reach * reach;
+    };
+    // The old sub-list's slots move to oldSlots_ (slot-to-slot matching reads them); the new one
+    // is counted first, so that its arrays are sized exactly (push_back would over-allocate up to
+    // twice over, and these arrays are never shrunk).
+    oldSlots_.swap(activeSlots);
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < first.size(); ++k)
+        count += within(k) ? 1 : 0;
+    resizeExactly(activeSlots, count);
+    resizeExactly(source_, count);
+    const std::size_t oldCount = activeFirst.size();
+    std::size_t a = 0, old = 0; // old: the first old candidate not yet matched or passed
+    for (std::size_t k = 0; k < first.size(); ++k)
+    {
+        std::uint32_t from = kNoSource;
+        if (slotsRebuilt_) // the old candidates name old slots: match by (i, j)
+        {
+            const std::uint64_t wanted = pairKey(first[k], second[k]);
+            while (old < oldCount && pairKey(activeFirst[old], activeSecond[old]) < wanted)
+                ++old; // no longer a slot (the deferred entries are new: nothing to zero)
+            if (old < oldCount && pairKey(activeFirst[old], activeSecond[old]) == wanted)
+                from = static_cast<std::uint32_t>(old++);
+        }
+        else if (old < oldCount && oldSlots_[old] == k) // every old candidate's slot is visited
+            from = static_cast<std::uint32_t>(old++);
+        if (within(k))
+        {
+            activeSlots[a] = static_cast<std::uint32_t>(k);
+            source_[a++] = from;
+        }
+        else if (from != kNoSource && !slotsRebuilt_ && activeMayBeActive[from])
+            zeroDeferred(activeDeferred[from]); // left out, so not touching: the contact opened
     }
+}
+
+void NeighborList::carryHistory(std::size_t oldCount)
+{
+    const std::size_t count = activeSlots.size();
+    const std::uint32_t* const source = source_.data();
+    // In place: both lists are in ascending order, so sources ascend with the new index. A
+    // candidate whose source lies after it is moved in ascending order, one whose source lies
+    // before it in descending order; neither move overwrites a source still to be read.
+    const auto carry = [&](auto& v, auto zero)
+    {
+        if (v.size() < oldCount) // (no history of this kind was kept: zeros)
+            v.assign(oldCount, zero);
+        resizeExactly(v, std::max(count, oldCount));
+        for (std::size_t a = 0; a < count; ++a)
+            if (source[a] != kNoSource && source[a] > a)
+                v[a] = v[source[a]];
+        for (std::size_t a = count; a-- > 0;)
+            if (source[a] != kNoSource && source[a] < a)
+                v[a] = v[source[a]];
+        for (std::size_t a = 0; a < count; ++a)
+            if (source[a] == kNoSource)
+                v[a] = zero;
+        v.resize(count);
+    };
+    carry(activeSpring, Vec3{});
+    if (keepRollingHistory)
+        carry(activeRolling, Vec3{});
+    else
+        activeRolling.clear();
+    carry(activeMayBeActive, std::uint8_t{0});
+}
+
+ContactHistory NeighborList::slotHistory(std::size_t k) const
+{
+    const std::uint64_t wanted = pairKey(first[k], second[k]);
+    std::size_t lo = 0, hi = activeFirst.size(); // the candidates are sorted by (i, j)
+    while (lo < hi)
+    {
+        const std::size_t mid = (lo + hi) / 2;
+        if (pairKey(activeFirst[mid], activeSecond[mid]) < wanted)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo < activeFirst.size() && pairKey(activeFirst[lo], activeSecond[lo]) == wanted)
+        return candidateHistory(lo);
+    return ContactHistory{};
 }
 
 std::size_t NeighborList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(first) + bytes(second) + bytes(tangentialSpring) + bytes(rollingSpring) +
-           bytes(activeSpring) + bytes(activeRolling) + bytes(activeMayBeActive) + bytes(activeMass) +
-           bytes(activeDeferred) + bytes(mayBeActive) + bytes(firstStart) + bytes(deferredIndex) +
-           bytes(deferredForce) + bytes(deferredTorque) + bytes(incomingStart) + bytes(forceSum) +
-           bytes(torqueSum) + bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) +
-           bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
+    return bytes(first) + bytes(second) + bytes(activeSpring) + bytes(activeRolling) +
+           bytes(activeMayBeActive) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
+           bytes(source_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferredForce) +
+           bytes(deferredTorque) + bytes(incomingStart) + bytes(forceSum) + bytes(torqueSum) +
+           bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) + bytes(positionAtBuild_) +
+           bytes(positionAtActiveBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
 {
     ++rebuilds_;
-    syncSlotHistory(); // the history is merged from the slots below
-    activeLive_ = false;
-    // The candidates' arrays refer to the old slots: freed before the new slots are allocated,
-    // which lowers the peak memory of a rebuild (the next force evaluation builds them anew).
-    for (auto* v : {&activeSlots, &activeFirst, &activeSecond, &activeDeferred})
+    // The candidates keep their history and (i, j), which the next sub-list merges by key; the
+    // rest of their record refers to the old slots and is freed before the new slots are
+    // allocated, which lowers the peak memory of a rebuild.
+    slotsRebuilt_ = true;
+    for (auto* v : {&activeSlots, &activeDeferred, &oldSlots_, &source_})
         std::vector<std::uint32_t>().swap(*v);
-    std::vector<Vec3>().swap(activeSpring);
-    std::vector<Vec3>().swap(activeRolling);
-    std::vector<std::uint8_t>().swap(activeMayBeActive);
     std::vector<Real>().swap(activeMass);
     activeStale_ = true; // new slots: the sub-list is rebuilt by the next force evaluation
     const std::size_t n = particles.size();
@@ -153,9 +220,6 @@ void NeighborList::rebuild(const ParticleStore& particles)
     {
         first.clear();
         second.clear();
-        tangentialSpring.clear();
-        rollingSpring.clear();
-        mayBeActive.clear();
         deferredIndex.clear();
         deferredForce.clear();
         deferredTorque.clear();
@@ -243,44 +307,17 @@ void NeighborList::rebuild(const ParticleStore& particles)
     for (std::size_t i = 0; i < n; ++i)
         firstStart[i + 1] += firstStart[i];
     const std::size_t pairCount = firstStart[n];
-    // The new list is built in fresh arrays and the old ones are freed after the merge, so that
-    // only one copy of the list is held between rebuilds.
+    // The new list is built in fresh arrays of exact size and swapped in; the old ones are freed
+    // on return, so that only one copy of the list is held between rebuilds.
     std::vector<std::uint32_t> newFirst(pairCount), newSecond;
-    std::vector<Vec3> newTangential, newRolling;
     newSecond.reserve(pairCount);
     for (const auto& part : chunkSecond)
         newSecond.insert(newSecond.end(), part.begin(), part.end());
     for (std::size_t i = 0; i < n; ++i)
         std::fill(newFirst.begin() + firstStart[i], newFirst.begin() + firstStart[i + 1],
                   static_cast<std::uint32_t>(i));
-
-    // Merge history by key: both lists are sorted by (i, j).
-    newTangential.assign(pairCount, Vec3{});
-    if (keepRollingHistory)
-        newRolling.assign(pairCount, Vec3{});
-    const bool oldHasRolling = rollingSpring.size() == first.size();
-    std::size_t old = 0;
-    const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
-    for (std::size_t k = 0; k < pairCount; ++k)
-    {
-        const std::uint64_t wanted = key(newFirst[k], newSecond[k]);
-        while (old < first.size() && key(first[old], second[old]) < wanted)
-            ++old;
-        if (old < first.size() && key(first[old], second[old]) == wanted)
-        {
-            newTangential[k] = tangentialSpring[old];
-            if (keepRollingHistory && oldHasRolling)
-                newRolling[k] = rollingSpring[old];
-        }
-    }
     first.swap(newFirst);
     second.swap(newSecond);
-    tangentialSpring.swap(newTangential);
-    if (keepRollingHistory)
-        rollingSpring.swap(newRolling);
-    else
-        rollingSpring.clear();
-    mayBeActive.assign(pairCount, 1);
 
     // Cross-block slots (the second particle in a later block), numbered by second particle and
     // then slot: each particle's incoming entries are contiguous and in slot order.

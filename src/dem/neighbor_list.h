@@ -3,12 +3,15 @@
 // Design. Candidate pairs (i < j) whose gap is below `skin` are found by binning particles into
 // cubic cells of edge >= 2 r_max + skin and testing the 27 surrounding cells: O(N). The list is
 // kept sorted by (i, j) and rebuilt only when some particle has moved more than skin/2 since the
-// last build, so between rebuilds no pair can come into contact unseen. Each pair slot carries its
-// contact history (tangential spring; rolling spring only when a rolling model keeps one); on a
-// rebuild the new sorted list is merged with the old one by key, so history survives rebuilds and
-// pairs that separated are dropped (Jolt's read-old/write-new contact cache; LAMMPS
-// FixNeighHistory). History is also zeroed the moment a contact opens (in the force loop), so a
-// re-formed contact starts fresh.
+// last build, so between rebuilds no pair can come into contact unseen.
+//
+// History. Contact history (tangential spring; rolling spring only when a rolling model keeps
+// one) lives only in the touching-candidate sub-list below: a slot outside it cannot be touching,
+// so its history is zero and is not stored (24-48 B x ~4.9 slots a particle saved). When the
+// sub-list is rebuilt, each new candidate takes the history of the old candidate with the same
+// slot, or, after a rebuild of the slots, with the same (i, j): both lists are sorted, so this is a
+// merge by key (Jolt's read-old/write-new contact cache; LAMMPS FixNeighHistory). History is also
+// zeroed the moment a contact opens (in the force loop), so a re-formed contact starts fresh.
 //
 // Force sums (STYLE 3.4). Particles are grouped in fixed blocks of `kBlockParticles` consecutive
 // indices, a partition that does not depend on the thread count. The force loop runs over whole
@@ -40,14 +43,6 @@ class NeighborList
 
     std::vector<std::uint32_t> first;  // i of each pair (sorted, i < j)
     std::vector<std::uint32_t> second; // j of each pair
-    // History per pair slot: tangential spring [m], rolling spring [N m] (empty unless
-    // keepRollingHistory), and whether it may be non-zero (cleared when the slot is found open, so
-    // an open slot is written once, not every step). While the candidate sub-list below is live,
-    // its candidates' history lives in the sub-list's own arrays (activeSpring, ...), and these
-    // hold it as of the sub-list's build; syncSlotHistory() brings them up to date.
-    std::vector<Vec3> tangentialSpring;
-    std::vector<Vec3> rollingSpring;
-    std::vector<std::uint8_t> mayBeActive;
 
     // Per-particle sums of the pair loop, force [N] and torque [N m], padded to four doubles so
     // that one vector instruction adds a contact (x, y, z, 0). The particle pass (world.cpp) turns
@@ -84,9 +79,11 @@ class NeighborList
     Real innerSkin = 0; // [m]
     std::vector<std::uint32_t> activeSlots;
     // Per candidate a (slot activeSlots[a]), what the force loop reads and writes, in sequence
-    // instead of scattered over all slots: first[] and second[]; the live history (tangential and
-    // rolling spring, mayBeActive); m* = m_i m_j / (m_i + m_j) [kg] (the contact law's expression,
-    // so the same bits); the slot's deferredIndex.
+    // instead of scattered over all slots: first[] and second[]; the contact history (tangential
+    // spring [m], rolling spring [N m] only if keepRollingHistory, and whether it may be non-zero:
+    // cleared when the contact is found open, so an open candidate is written once, not every
+    // step); m* = m_i m_j / (m_i + m_j) [kg] (the contact law's expression, so the same bits); the
+    // slot's deferredIndex.
     std::vector<std::uint32_t> activeFirst, activeSecond;
     std::vector<Vec3> activeSpring, activeRolling;
     std::vector<std::uint8_t> activeMayBeActive;
@@ -109,30 +106,18 @@ class NeighborList
     /// particles by the caller; also marks the candidate sub-list stale if some particle moved
     /// more than innerSkin/2 since it was built. Called once per step.
     bool checkMotion(std::size_t particleCount, Real largestMotion2, Real largestActiveMotion2);
-    /// Rebuilds activeSlots if stale, at the current positions, clearing the history of slots left
-    /// out that were in contact (they just opened). `deferredForce`/`deferredTorque` of such
-    /// slots are zeroed as well.
+    /// Rebuilds the candidate sub-list if stale, at the current positions, carrying each
+    /// continuing contact's history; a candidate left out that was in contact just opened, so its
+    /// history is dropped and its deferred entry zeroed.
     void refreshActiveSlots(const ParticleStore& particles);
-    /// Rebuilds the pair list, carrying history over by (i, j).
+    /// Rebuilds the pair slots; the history reaches the next sub-list by (i, j).
     void rebuild(const ParticleStore& particles);
 
-    /// History of slot k as the contact law takes it.
-    ContactHistory history(std::size_t k) const
-    {
-        return historyAt(tangentialSpring, rollingSpring, keepRollingHistory, k);
-    }
-    void setHistory(std::size_t k, const ContactHistory& h)
-    {
-        storeHistoryAt(tangentialSpring, rollingSpring, keepRollingHistory, k, h);
-    }
+    /// History of slot k as the contact law takes it: its candidate's, or zero if it is not a
+    /// candidate (then it is open). A look-up by (i, j), for tests and output, not the force loop.
+    ContactHistory slotHistory(std::size_t k) const;
 
-    /// Slot k is found open: its history is forgotten, its deferred entry (if any) zeroed.
-    void openSlot(std::size_t k)
-    {
-        forget(tangentialSpring, rollingSpring, mayBeActive, k, deferredIndex[k]);
-    }
-
-    /// History of candidate a (the live copy, see activeSpring) as the contact law takes it.
+    /// History of candidate a as the contact law takes it.
     ContactHistory candidateHistory(std::size_t a) const
     {
         return historyAt(activeSpring, activeRolling, keepRollingHistory, a);
@@ -141,15 +126,13 @@ class NeighborList
     {
         storeHistoryAt(activeSpring, activeRolling, keepRollingHistory, a, h);
     }
-    /// Candidate a is found open: openSlot for its live copy.
+    /// Candidate a is found open: its history is forgotten, its deferred entry (if any) zeroed.
     void openCandidate(std::size_t a)
     {
-        forget(activeSpring, activeRolling, activeMayBeActive, a, activeDeferred[a]);
+        storeHistoryAt(activeSpring, activeRolling, keepRollingHistory, a, ContactHistory{});
+        activeMayBeActive[a] = 0;
+        zeroDeferred(activeDeferred[a]);
     }
-    /// Copies the candidates' live history into the slot arrays (tangentialSpring, rollingSpring,
-    /// mayBeActive). The list does so itself before it rebuilds; call it before reading those
-    /// arrays between steps (tests, output).
-    void syncSlotHistory();
 
     std::size_t size() const { return first.size(); }
     std::size_t rebuildCount() const { return rebuilds_; }
@@ -158,21 +141,24 @@ class NeighborList
     std::size_t memoryBytes() const;
 
   private:
-    /// An open contact: entry `index` of the history arrays zeroed, its flag cleared, and its
-    /// deferred entry (if any) zeroed.
-    void forget(std::vector<Vec3>& tangential, std::vector<Vec3>& rolling, std::vector<std::uint8_t>& flag,
-                std::size_t index, std::uint32_t deferredEntry)
+    void zeroDeferred(std::uint32_t entry)
     {
-        storeHistoryAt(tangential, rolling, keepRollingHistory, index, ContactHistory{});
-        flag[index] = 0;
-        if (deferredEntry != kInBlock)
+        if (entry != kInBlock)
         {
-            deferredForce[deferredEntry] = Vec3{};
-            deferredTorque[deferredEntry] = Vec3{};
+            deferredForce[entry] = Vec3{};
+            deferredTorque[entry] = Vec3{};
         }
     }
+    /// The new sub-list's slots into activeSlots and, per candidate, the old candidate whose
+    /// history it continues into source_ (kNoSource if none); zeroes the deferred entries of old
+    /// candidates that are left out while they may be in contact.
+    void selectCandidates(const ParticleStore& particles);
+    /// Moves the candidates' history to their new places (source_), zero where there is none.
+    void carryHistory(std::size_t oldCount);
 
-    bool activeLive_ = false; // the candidates' arrays hold the live history of their slots
+    static constexpr std::uint32_t kNoSource = 0xffffffffu;
+    bool slotsRebuilt_ = false; // the slots were rebuilt since the sub-list was: carry by (i, j)
+    std::vector<std::uint32_t> oldSlots_, source_; // scratch of the sub-list rebuild (grow-only)
     std::vector<Vec3> positionAtBuild_;
     std::vector<Vec3> positionAtActiveBuild_;
     bool activeStale_ = true;

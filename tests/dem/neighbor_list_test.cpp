@@ -1,9 +1,11 @@
 // The Verlet list finds exactly the pairs a brute-force search finds, stays sorted, and carries
-// history over a rebuild by (i, j).
+// history over a rebuild by (i, j) and over a new candidate sub-list by slot.
 #include "dem/neighbor_list.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <map>
 #include <random>
 #include <set>
 
@@ -47,21 +49,115 @@ TEST(NeighborList, MatchesBruteForce)
     }
 }
 
+/// A value per (i, j) to store as history and find again.
+Vec3 keyValue(std::uint32_t i, std::uint32_t j)
+{
+    return {double(i), double(j), 1.0};
+}
+
 TEST(NeighborList, HistorySurvivesRebuild)
 {
     ParticleStore p = randomParticles(500, 2);
     NeighborList list;
     list.skin = 0.5e-3;
     list.rebuild(p);
-    ASSERT_GT(list.size(), 0u);
-    for (std::size_t k = 0; k < list.size(); ++k)
-        list.tangentialSpring[k] = {double(list.first[k]), double(list.second[k]), 0};
+    list.refreshActiveSlots(p);
+    ASSERT_GT(list.activeSlots.size(), 0u);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> held;
+    for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
+    {
+        list.activeSpring[a] = keyValue(list.activeFirst[a], list.activeSecond[a]);
+        held.insert({list.activeFirst[a], list.activeSecond[a]});
+    }
     list.rebuild(p);
+    // Between the rebuild and the next sub-list, a slot's history is found by (i, j).
     for (std::size_t k = 0; k < list.size(); ++k)
     {
-        EXPECT_EQ(list.tangentialSpring[k].x, double(list.first[k]));
-        EXPECT_EQ(list.tangentialSpring[k].y, double(list.second[k]));
+        const bool wasHeld = held.count({list.first[k], list.second[k]}) > 0;
+        EXPECT_EQ(list.slotHistory(k).tangentialSpring,
+                  wasHeld ? keyValue(list.first[k], list.second[k]) : Vec3{});
     }
+    list.refreshActiveSlots(p);
+    std::size_t carried = 0;
+    for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
+    {
+        const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
+        const bool wasHeld = held.count({i, j}) > 0;
+        carried += wasHeld ? 1 : 0;
+        EXPECT_EQ(list.activeSpring[a], wasHeld ? keyValue(i, j) : Vec3{}) << i << " " << j;
+    }
+    EXPECT_EQ(carried, held.size()); // same positions: every candidate is one again
+}
+
+/// A new candidate sub-list over the same slots (particles moved less than skin/2) carries each
+/// continuing candidate's history and flag to its new place, moving entries both towards the
+/// front and towards the back of the arrays (in place), starts new candidates at zero, and zeroes
+/// the deferred entry of a candidate left out while it may have been in contact.
+TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
+{
+    ParticleStore p = randomParticles(3000, 4); // three blocks: cross-block slots
+    NeighborList list;
+    list.skin = 0.5e-3;
+    list.rebuild(p);
+    list.refreshActiveSlots(p);
+    ASSERT_GT(list.deferredForce.size(), 0u);
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> oldIndex;
+    for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
+    {
+        const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
+        list.activeSpring[a] = keyValue(i, j);
+        list.activeMayBeActive[a] = static_cast<std::uint8_t>(a % 2); // half may be in contact
+        if (list.activeDeferred[a] != NeighborList::kInBlock)
+            list.deferredForce[list.activeDeferred[a]] = {1, 2, 3};
+        oldIndex[{i, j}] = a;
+    }
+    const std::vector<std::uint32_t> oldDeferred = list.activeDeferred;
+    const std::vector<std::uint8_t> oldFlag = list.activeMayBeActive;
+
+    // Let the sub-list age past 128 steps (its inner skin is then halved: candidates leave), jitter
+    // by up to 0.1 mm (< skin/2, so the slots stay valid: candidates join), then a new sub-list.
+    for (int s = 0; s < 128; ++s)
+        list.refreshActiveSlots(p);
+    ASSERT_EQ(list.activeRebuildCount(), 1u);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> jitter(-0.1e-3 / std::sqrt(3.0), 0.1e-3 / std::sqrt(3.0));
+    for (Vec3& x : p.position)
+        x += Vec3{jitter(rng), jitter(rng), jitter(rng)};
+    ASSERT_FALSE(list.checkMotion(p.size(), 0.0, 1.0)); // the sub-list is stale, the slots are not
+    list.refreshActiveSlots(p);
+
+    std::size_t forward = 0, backward = 0, fresh = 0;
+    std::set<std::size_t> continued;
+    for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
+    {
+        const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
+        const auto found = oldIndex.find({i, j});
+        if (found == oldIndex.end())
+        {
+            ++fresh;
+            EXPECT_EQ(list.activeSpring[a], Vec3{});
+            EXPECT_EQ(list.activeMayBeActive[a], 0);
+            continue;
+        }
+        const std::size_t b = found->second;
+        continued.insert(b);
+        forward += b > a ? 1 : 0; // the entry moved towards the front
+        backward += b < a ? 1 : 0;
+        EXPECT_EQ(list.activeSpring[a], keyValue(i, j));
+        EXPECT_EQ(list.activeMayBeActive[a], oldFlag[b]);
+    }
+    EXPECT_GT(forward, 0u);
+    EXPECT_GT(backward, 0u);
+    EXPECT_GT(fresh, 0u);
+    std::size_t zeroed = 0;
+    for (const auto& [key, b] : oldIndex)
+        if (!continued.count(b) && oldDeferred[b] != NeighborList::kInBlock)
+        {
+            const Vec3 expected = oldFlag[b] ? Vec3{} : Vec3{1, 2, 3};
+            EXPECT_EQ(list.deferredForce[oldDeferred[b]], expected);
+            zeroed += oldFlag[b];
+        }
+    EXPECT_GT(zeroed, 0u);
 }
 
 TEST(NeighborList, RebuildNeededAfterHalfSkin)
