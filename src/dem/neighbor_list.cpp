@@ -98,21 +98,21 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
 
 void NeighborList::selectCandidates(const ParticleStore& particles)
 {
+    // Which slots are within the inner skin, and how many: the new sub-list's arrays are then
+    // sized exactly (push_back would over-allocate up to twice over, and they are never shrunk).
     const Vec3* const x = particles.position.data();
     const Real* const r = particles.radius.data();
-    const auto within = [&](std::size_t k)
+    resizeExactly(within_, first.size());
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < first.size(); ++k)
     {
         const std::uint32_t i = first[k], j = second[k];
         const Real reach = r[i] + r[j] + innerSkin;
-        return lengthSquared(x[i] - x[j]) < reach * reach;
-    };
-    // The old sub-list's slots move to oldSlots_ (slot-to-slot matching reads them); the new one
-    // is counted first, so that its arrays are sized exactly (push_back would over-allocate up to
-    // twice over, and these arrays are never shrunk).
+        within_[k] = lengthSquared(x[i] - x[j]) < reach * reach;
+        count += within_[k];
+    }
+    // The old sub-list's slots move to oldSlots_ (slot-to-slot matching reads them).
     oldSlots_.swap(activeSlots);
-    std::size_t count = 0;
-    for (std::size_t k = 0; k < first.size(); ++k)
-        count += within(k) ? 1 : 0;
     resizeExactly(activeSlots, count);
     resizeExactly(source_, count);
     const std::size_t oldCount = activeFirst.size();
@@ -130,7 +130,7 @@ void NeighborList::selectCandidates(const ParticleStore& particles)
         }
         else if (old < oldCount && oldSlots_[old] == k) // every old candidate's slot is visited
             from = static_cast<std::uint32_t>(old++);
-        if (within(k))
+        if (within_[k])
         {
             activeSlots[a] = static_cast<std::uint32_t>(k);
             source_[a++] = from;
@@ -144,31 +144,46 @@ void NeighborList::carryHistory(std::size_t oldCount)
 {
     const std::size_t count = activeSlots.size();
     const std::uint32_t* const source = source_.data();
+    if (keepRollingHistory && activeRolling.size() < oldCount) // (no rolling history was kept: zeros)
+        activeRolling.assign(oldCount, Vec3{});
+    const std::size_t room = std::max(count, oldCount);
+    resizeExactly(activeSpring, room);
+    resizeExactly(activeMayBeActive, room);
+    if (keepRollingHistory)
+        resizeExactly(activeRolling, room);
+    else
+        activeRolling.clear();
+    Vec3* const spring = activeSpring.data();
+    Vec3* const rolling = activeRolling.data();
+    std::uint8_t* const flag = activeMayBeActive.data();
+    const auto move = [&](std::size_t to, std::size_t from)
+    {
+        spring[to] = spring[from];
+        flag[to] = flag[from];
+        if (keepRollingHistory)
+            rolling[to] = rolling[from];
+    };
     // In place: both lists are in ascending order, so sources ascend with the new index. A
     // candidate whose source lies after it is moved in ascending order, one whose source lies
     // before it in descending order; neither move overwrites a source still to be read.
-    const auto carry = [&](auto& v, auto zero)
-    {
-        if (v.size() < oldCount) // (no history of this kind was kept: zeros)
-            v.assign(oldCount, zero);
-        resizeExactly(v, std::max(count, oldCount));
-        for (std::size_t a = 0; a < count; ++a)
-            if (source[a] != kNoSource && source[a] > a)
-                v[a] = v[source[a]];
-        for (std::size_t a = count; a-- > 0;)
-            if (source[a] != kNoSource && source[a] < a)
-                v[a] = v[source[a]];
-        for (std::size_t a = 0; a < count; ++a)
-            if (source[a] == kNoSource)
-                v[a] = zero;
-        v.resize(count);
-    };
-    carry(activeSpring, Vec3{});
+    for (std::size_t a = 0; a < count; ++a)
+        if (source[a] != kNoSource && source[a] > a)
+            move(a, source[a]);
+    for (std::size_t a = count; a-- > 0;)
+        if (source[a] != kNoSource && source[a] < a)
+            move(a, source[a]);
+    for (std::size_t a = 0; a < count; ++a)
+        if (source[a] == kNoSource)
+        {
+            spring[a] = Vec3{};
+            flag[a] = 0;
+            if (keepRollingHistory)
+                rolling[a] = Vec3{};
+        }
+    activeSpring.resize(count);
+    activeMayBeActive.resize(count);
     if (keepRollingHistory)
-        carry(activeRolling, Vec3{});
-    else
-        activeRolling.clear();
-    carry(activeMayBeActive, std::uint8_t{0});
+        activeRolling.resize(count);
 }
 
 ContactHistory NeighborList::slotHistory(std::size_t k) const
@@ -193,7 +208,7 @@ std::size_t NeighborList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(activeSpring) + bytes(activeRolling) +
            bytes(activeMayBeActive) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
-           bytes(source_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferredForce) +
+           bytes(source_) + bytes(within_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferredForce) +
            bytes(deferredTorque) + bytes(incomingStart) + bytes(forceSum) + bytes(torqueSum) +
            bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) + bytes(positionAtBuild_) +
            bytes(positionAtActiveBuild_);
@@ -209,6 +224,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
     for (auto* v : {&activeSlots, &activeDeferred, &oldSlots_, &source_})
         std::vector<std::uint32_t>().swap(*v);
     std::vector<Real>().swap(activeMass);
+    std::vector<std::uint8_t>().swap(within_);
     activeStale_ = true; // new slots: the sub-list is rebuilt by the next force evaluation
     const std::size_t n = particles.size();
     positionAtBuild_.assign(particles.position.begin(), particles.position.end());

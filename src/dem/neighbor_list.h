@@ -159,6 +159,7 @@ class NeighborList
     static constexpr std::uint32_t kNoSource = 0xffffffffu;
     bool slotsRebuilt_ = false; // the slots were rebuilt since the sub-list was: carry by (i, j)
     std::vector<std::uint32_t> oldSlots_, source_; // scratch of the sub-list rebuild (grow-only)
+    std::vector<std::uint8_t> within_;             // per slot, within the inner skin (scratch)
     std::vector<Vec3> positionAtBuild_;
     std::vector<Vec3> positionAtActiveBuild_;
     bool activeStale_ = true;
