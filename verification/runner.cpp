@@ -3,14 +3,22 @@
 #include "core/error.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <mutex>
 #include <sstream>
+#include <thread>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace veridem::verify
 {
@@ -108,28 +116,25 @@ int runCases(const RunRequest& request)
         }
     }
 
+    std::vector<const Case*> chosen;
+    for (const auto& c : registry())
+        if (selected(c, request))
+            chosen.push_back(&c);
     struct Outcome
     {
         const Case* c;
         CaseResult result;
         std::string error;
     };
-    std::vector<Outcome> outcomes;
-    CaseContext context{.showProgress = request.showProgress};
-
-    std::printf("%-30s %-26s %14s %14s %10s %11s %s\n", "case", "quantity", "theory", "measured", "error",
-                "tolerance", "result");
-    std::printf("%s\n", std::string(118, '-').c_str());
-    std::fflush(stdout);
-    for (const auto& c : registry())
+    std::vector<Outcome> outcomes(chosen.size());
+    const CaseContext context{.showProgress = request.showProgress};
+    const auto runOne = [&](std::size_t k)
     {
-        if (!selected(c, request))
-            continue;
-        Outcome o{&c, {}, {}};
+        Outcome o{chosen[k], {}, {}};
         const auto start = std::chrono::steady_clock::now();
         try
         {
-            o.result = c.run(context);
+            o.result = chosen[k]->run(context);
         }
         catch (const std::exception& e)
         {
@@ -137,6 +142,49 @@ int runCases(const RunRequest& request)
         }
         o.result.wallSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return o;
+    };
+
+    // Workers take the cases in registry order; this thread reports them in that order.
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t jobs =
+        std::min<std::size_t>(request.jobs > 0 ? static_cast<std::size_t>(request.jobs) : cores,
+                              std::max<std::size_t>(chosen.size(), 1));
+    std::mutex mutex;
+    std::condition_variable finished;
+    std::vector<char> done(chosen.size(), 0);
+    std::atomic<std::size_t> next{0};
+    const auto worker = [&]
+    {
+#ifdef _OPENMP
+        if (jobs > 1)
+            omp_set_num_threads(1); // the cores are taken by the other cases
+#endif
+        for (std::size_t k = next++; k < chosen.size(); k = next++)
+        {
+            Outcome o = runOne(k);
+            const std::lock_guard<std::mutex> lock(mutex);
+            outcomes[k] = std::move(o);
+            done[k] = 1;
+            finished.notify_all();
+        }
+    };
+    std::vector<std::thread> workers;
+    for (std::size_t w = 0; w < jobs; ++w)
+        workers.emplace_back(worker);
+
+    std::printf("%-30s %-26s %14s %14s %10s %11s %s\n", "case", "quantity", "theory", "measured", "error",
+                "tolerance", "result");
+    std::printf("%s\n", std::string(118, '-').c_str());
+    std::fflush(stdout);
+    for (std::size_t k = 0; k < chosen.size(); ++k)
+    {
+        {
+            std::unique_lock<std::mutex> lock(mutex);
+            finished.wait(lock, [&] { return done[k] != 0; });
+        }
+        const Outcome& o = outcomes[k];
+        const Case& c = *o.c;
         for (const auto& q : o.result.quantities)
             printRow(c.name, q);
         if (!o.error.empty())
@@ -150,8 +198,9 @@ int runCases(const RunRequest& request)
         if (request.seriesDir)
             for (const auto& s : o.result.series)
                 writeSeries(std::filesystem::path(*request.seriesDir) / c.name, s);
-        outcomes.push_back(std::move(o));
     }
+    for (auto& w : workers)
+        w.join();
 
     int failed = 0;
     for (const auto& o : outcomes)

@@ -18,12 +18,16 @@ struct RunRequest
     std::optional<std::string> jsonPath;
     std::optional<std::string> seriesDir; // write <dir>/<case>/<series>.csv
     bool showProgress = true;
+    int jobs = 0; // cases run at once, on threads of their own (0: one per core)
 };
 
 /// Prints the case list (name, labels, summary).
 void listCases();
 
-/// Runs the selected cases; returns the process exit code (0 when every case passed).
+/// Runs the selected cases, `jobs` at a time, and reports them in registry order as each
+/// finishes (results do not depend on `jobs`: the cases share nothing, and a case's own loops give
+/// the same bits on any number of threads); returns the process exit code (0 when every case
+/// passed).
 int runCases(const RunRequest& request);
 
 } // namespace veridem::verify

@@ -1,6 +1,6 @@
 // veridem: the command-line program.
 //   veridem run SCENE [--out DIR]      run a scene file (DEM 3D or FEM/DEM 2D)
-//   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR]
+//   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR] [--jobs N]
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "io/toml_reader.h"
@@ -67,6 +67,10 @@ int main(int argc, char** argv)
     verify->add_option("--json", jsonPath, "also write the results as JSON");
     verify->add_option("--report", reportDir, "write an HTML report with figures to this directory");
     verify->add_flag("--quiet", quiet, "no progress output");
+    verify
+        ->add_option("--jobs", verifyRequest.jobs,
+                     "cases run at once, each on a thread of its own (default: one per core)")
+        ->check(CLI::Range(0, 256));
 
     CLI11_PARSE(app, argc, argv);
 
