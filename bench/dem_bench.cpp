@@ -29,6 +29,7 @@
 #include <stdexcept>
 #include <string>
 #include <sys/resource.h>
+#include <unistd.h> // isatty
 #include <vector>
 
 #ifdef _OPENMP
@@ -233,6 +234,9 @@ int main(int argc, char** argv)
         std::vector<double> windows; // seconds per window
         windows.reserve(static_cast<std::size_t>(o.steps / kWindow));
         auto windowStart = start;
+        const bool progressTty = isatty(STDERR_FILENO) != 0; // (not into logs)
+        auto nextProgress = start + std::chrono::seconds(5);
+        bool progressShown = false;
         for (long done = 0; done < o.steps;) // windows of kWindow steps, then the remainder
         {
             const long count = std::min(kWindow, o.steps - done);
@@ -244,8 +248,22 @@ int main(int argc, char** argv)
                 const auto now = std::chrono::steady_clock::now();
                 windows.push_back(std::chrono::duration<double>(now - windowStart).count());
                 windowStart = now;
+                // Progress on stderr for long runs (a 1e6-sphere bed takes minutes), every ~5 s;
+                // the clock is read here anyway, so the loop pays one comparison.
+                if (progressTty && now >= nextProgress)
+                {
+                    const double elapsed = std::chrono::duration<double>(now - start).count();
+                    const double fraction = static_cast<double>(done) / static_cast<double>(o.steps);
+                    std::fprintf(stderr, "\r  step %ld of %ld (%.0f %%), ETA %.0f s   ", done, o.steps,
+                                 100 * fraction, elapsed / fraction - elapsed);
+                    std::fflush(stderr);
+                    nextProgress = now + std::chrono::seconds(5);
+                    progressShown = true;
+                }
             }
         }
+        if (progressShown)
+            std::fprintf(stderr, "\r%*s\r", 60, "");
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double cpu = cpuSeconds() - cpuStart;
