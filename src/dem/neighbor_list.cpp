@@ -186,6 +186,16 @@ void NeighborList::carryHistory(std::size_t oldCount)
         activeRolling.resize(count);
 }
 
+void NeighborList::forgetCandidates()
+{
+    for (auto* v : {&activeSlots, &activeFirst, &activeSecond, &activeDeferred})
+        v->clear();
+    activeSpring.clear();
+    activeRolling.clear();
+    activeMayBeActive.clear();
+    activeMass.clear();
+}
+
 ContactHistory NeighborList::slotHistory(std::size_t k) const
 {
     const std::uint64_t wanted = pairKey(first[k], second[k]);
@@ -239,6 +249,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
         deferredIndex.clear();
         deferredForce.clear();
         deferredTorque.clear();
+        forgetCandidates();
         return;
     }
 
@@ -334,6 +345,11 @@ void NeighborList::rebuild(const ParticleStore& particles)
                   static_cast<std::uint32_t>(i));
     first.swap(newFirst);
     second.swap(newSecond);
+    if (first.empty())
+        // No slots: no force evaluation will rebuild the sub-list, so the old candidates would
+        // wait for slots to come back, and hand a pair that was in contact before the pairs
+        // separated its old history then.
+        forgetCandidates();
 
     // Cross-block slots (the second particle in a later block), numbered by second particle and
     // then slot: each particle's incoming entries are contiguous and in slot order.

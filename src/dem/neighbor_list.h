@@ -155,6 +155,8 @@ class NeighborList
     void selectCandidates(const ParticleStore& particles);
     /// Moves the candidates' history to their new places (source_), zero where there is none.
     void carryHistory(std::size_t oldCount);
+    /// Drops every candidate and its history (the slots are gone).
+    void forgetCandidates();
 
     static constexpr std::uint32_t kNoSource = 0xffffffffu;
     bool slotsRebuilt_ = false; // the slots were rebuilt since the sub-list was: carry by (i, j)

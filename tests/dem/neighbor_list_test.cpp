@@ -160,6 +160,31 @@ TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
     EXPECT_GT(zeroed, 0u);
 }
 
+/// A contact whose pair leaves the list altogether (no slots left, so no sub-list is rebuilt until
+/// slots return) must not hand its old history to the pair when it comes back.
+TEST(NeighborList, HistoryOfAPairThatLeftTheListIsForgotten)
+{
+    ParticleStore p;
+    p.add({0, 0, 0}, {}, {}, 1e-3, 2500, 0);
+    p.add({1.9e-3, 0, 0}, {}, {}, 1e-3, 2500, 0); // touching
+    NeighborList list;
+    list.skin = 0.5e-3;
+    list.rebuild(p);
+    list.refreshActiveSlots(p);
+    ASSERT_EQ(list.activeSlots.size(), 1u);
+    list.activeSpring[0] = {1e-6, 0, 0};
+    list.activeMayBeActive[0] = 1;
+    p.position[1] = {10e-3, 0, 0}; // far apart: no slot
+    list.rebuild(p);
+    ASSERT_EQ(list.size(), 0u);
+    p.position[1] = {1.9e-3, 0, 0}; // back in contact
+    list.rebuild(p);
+    list.refreshActiveSlots(p);
+    ASSERT_EQ(list.activeSlots.size(), 1u);
+    EXPECT_EQ(list.activeSpring[0], Vec3{});
+    EXPECT_EQ(list.activeMayBeActive[0], 0);
+}
+
 TEST(NeighborList, RebuildNeededAfterHalfSkin)
 {
     ParticleStore p = randomParticles(10, 3);
