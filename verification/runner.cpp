@@ -140,6 +140,10 @@ int runCases(const RunRequest& request)
         {
             o.error = e.what();
         }
+        catch (...) // (on a worker thread an escaping exception would end the program)
+        {
+            o.error = "an exception that is not a std::exception";
+        }
         o.result.wallSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return o;
