@@ -276,6 +276,15 @@ int main(int argc, char** argv)
                     setupSeconds, rate, static_cast<double>(o.steps) / seconds);
         if (!windows.empty())
         {
+            // VERIDEM_BENCH_WINDOWS=file: every window's rate in run order, one per line, to see
+            // whether slow windows come in stretches (other load) or singly (rebuilds).
+            if (const char* path = std::getenv("VERIDEM_BENCH_WINDOWS"))
+                if (std::FILE* f = std::fopen(path, "w"))
+                {
+                    for (const double w : windows)
+                        std::fprintf(f, "%.6g\n", static_cast<double>(n) * kWindow / w);
+                    std::fclose(f);
+                }
             // Best and median: the median window shows whether a slow whole run was slow
             // throughout (other load) or in a few windows (list rebuilds, a preempted thread).
             std::sort(windows.begin(), windows.end());

@@ -189,14 +189,14 @@ template <class M> VERIDEM_HOT_INLINE bool allLanes(const M& mask)
 VERIDEM_HOT_INLINE void transpose(const Lanes4& x, const Lanes4& y, const Lanes4& z, Lanes4* out)
 {
     const Lanes4 zero = {};
-    const Lanes4 xyEven = __builtin_shuffle(x, y, Index4{0, 4, 2, 6});    // x0 y0 x2 y2
-    const Lanes4 xyOdd = __builtin_shuffle(x, y, Index4{1, 5, 3, 7});     // x1 y1 x3 y3
-    const Lanes4 z0Even = __builtin_shuffle(z, zero, Index4{0, 4, 2, 6}); // z0 0 z2 0
-    const Lanes4 z0Odd = __builtin_shuffle(z, zero, Index4{1, 5, 3, 7});  // z1 0 z3 0
-    out[0] = __builtin_shuffle(xyEven, z0Even, Index4{0, 1, 4, 5});
-    out[1] = __builtin_shuffle(xyOdd, z0Odd, Index4{0, 1, 4, 5});
-    out[2] = __builtin_shuffle(xyEven, z0Even, Index4{2, 3, 6, 7});
-    out[3] = __builtin_shuffle(xyOdd, z0Odd, Index4{2, 3, 6, 7});
+    const Lanes4 xyEven = __builtin_shufflevector(x, y, 0, 4, 2, 6);    // x0 y0 x2 y2
+    const Lanes4 xyOdd = __builtin_shufflevector(x, y, 1, 5, 3, 7);     // x1 y1 x3 y3
+    const Lanes4 z0Even = __builtin_shufflevector(z, zero, 0, 4, 2, 6); // z0 0 z2 0
+    const Lanes4 z0Odd = __builtin_shufflevector(z, zero, 1, 5, 3, 7);  // z1 0 z3 0
+    out[0] = __builtin_shufflevector(xyEven, z0Even, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(xyOdd, z0Odd, 0, 1, 4, 5);
+    out[2] = __builtin_shufflevector(xyEven, z0Even, 2, 3, 6, 7);
+    out[3] = __builtin_shufflevector(xyOdd, z0Odd, 2, 3, 6, 7);
 }
 
 /// Two contacts (the portable variant: one SSE2 register per quantity).
@@ -274,8 +274,8 @@ template <class V> VERIDEM_HOT_INLINE Lanes3<V> gatherVec3(const Vec3* a, const 
                      xy2 = load<Lanes2>(&a[index[2]].x), xy3 = load<Lanes2>(&a[index[3]].x);
         const Lanes4 even = __builtin_shufflevector(xy0, xy2, 0, 1, 2, 3); // x0 y0 x2 y2
         const Lanes4 odd = __builtin_shufflevector(xy1, xy3, 0, 1, 2, 3);  // x1 y1 x3 y3
-        return {__builtin_shuffle(even, odd, Index4{0, 4, 2, 6}),
-                __builtin_shuffle(even, odd, Index4{1, 5, 3, 7}), gather<V>(a, index, &Vec3::z)};
+        return {__builtin_shufflevector(even, odd, 0, 4, 2, 6),
+                __builtin_shufflevector(even, odd, 1, 5, 3, 7), gather<V>(a, index, &Vec3::z)};
     }
     else
         return {gather<V>(a, index, &Vec3::x), gather<V>(a, index, &Vec3::y), gather<V>(a, index, &Vec3::z)};
