@@ -316,6 +316,9 @@ int main(int argc, char** argv)
                     100.0 * static_cast<double>(world.neighbors.deferredForce.size()) /
                         static_cast<double>(std::max<std::size_t>(world.neighbors.size(), 1)),
                     NeighborList::kBlockParticles);
+        if (world.pairSchedule.chunks > 1)
+            std::printf("  pair stage on %d threads: the busiest has %.1f %% of the weighted candidates\n",
+                        world.pairSchedule.chunks, 100.0 * world.pairSchedule.heaviestShare);
         std::printf("  touching candidates %zu (%.2f per particle, inner skin %.3g m), rebuilt %zu times\n",
                     world.neighbors.activeSlots.size(),
                     static_cast<double>(world.neighbors.activeSlots.size()) / static_cast<double>(n),

@@ -848,6 +848,48 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
 namespace
 {
 
+/// The runs of blocks the threads evaluate (world.pairSchedule), remade when the candidate
+/// sub-list, the slots or the thread count changed. Weight of a block: its touching candidates
+/// (the selection and the kernel follow their count), a cross-block one counted three times. On
+/// the 20k bed two threads took 11-25 % longer on blocks 0-9 than on 10-19 (3000 steps, six runs),
+/// which hold 9.6 % more candidates but 55 % more cross-block ones: their deferred entries are
+/// stores scattered over memory, some into lines the other thread writes too. The weight 3 fits
+/// that measurement; it moves the boundary one block down, and the longer thread's time fell from
+/// 2.44-2.97 s to 2.12-2.40 s (the other thread now 1-14 % shorter). The order of the sums does not
+/// depend on the schedule: any split gives the same bits. `activeFrom`: particle -> its first
+/// candidate.
+template <class ActiveFrom>
+const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, int chunks,
+                                            const ActiveFrom& activeFrom)
+{
+    PairSchedule& s = world.pairSchedule;
+    const NeighborList& list = world.neighbors;
+    const std::size_t n = world.particles.size();
+    if (s.chunks != chunks || s.subListRebuilds != list.activeRebuildCount() ||
+        s.slotRebuilds != list.rebuildCount() || s.particles != n)
+    {
+        constexpr std::size_t B = NeighborList::kBlockParticles;
+        constexpr std::uint64_t kCrossBlockWeight = 3;
+        std::vector<std::uint64_t> weight(blocks);
+        for (std::size_t b = 0; b < blocks; ++b)
+        {
+            const std::size_t begin = activeFrom(b * B), end = activeFrom(std::min((b + 1) * B, n));
+            std::uint64_t w = end - begin;
+            for (std::size_t a = begin; a < end; ++a)
+                w += (kCrossBlockWeight - 1) * (list.activeDeferred[a] != NeighborList::kInBlock);
+            weight[b] = w;
+        }
+        partitionBlocks(weight.data(), blocks, chunks, s.runs);
+        s.heaviestShare = heaviestShare(weight.data(), s.runs, chunks);
+        s.runHealth.assign(s.runs.size(), ContactHealth{});
+        s.chunks = chunks;
+        s.subListRebuilds = list.activeRebuildCount();
+        s.slotRebuilds = list.rebuildCount();
+        s.particles = n;
+    }
+    return s.runs;
+}
+
 /// computePairForces for a world with particles and pair slots.
 void pairForcesOfSlots(World& world, Real dt)
 {
@@ -858,22 +900,10 @@ void pairForcesOfSlots(World& world, Real dt)
     const bool allBatchable = lanesApply(world);
     const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
 
-    // Chunks: contiguous ranges of whole blocks, one per thread, balanced by slot count.
     constexpr std::size_t B = NeighborList::kBlockParticles;
     const std::size_t blocks = (n + B - 1) / B;
     const int chunks = static_cast<int>(std::min(
         {static_cast<std::size_t>(loopThreads(std::max(pairCount, n))), blocks, std::size_t{kMaxChunks}}));
-    std::size_t blockEdge[kMaxChunks + 1];
-    blockEdge[0] = 0;
-    blockEdge[chunks] = blocks;
-    for (int c = 1; c < chunks; ++c)
-    {
-        const std::size_t target = pairCount * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
-        std::size_t b = blockEdge[c - 1];
-        while (b < blocks && list.firstStart[std::min(b * B, n)] < target)
-            ++b;
-        blockEdge[c] = b;
-    }
 
     list.refreshActiveSlots(p); // the touching candidates, if the sub-list is stale
     const std::uint32_t* const active = list.activeSlots.data();
@@ -883,17 +913,18 @@ void pairForcesOfSlots(World& world, Real dt)
         return static_cast<std::size_t>(
             std::lower_bound(active, active + activeCount, list.firstStart[particle]) - active);
     };
+    const std::vector<BlockRun>& runs = scheduleBlocks(world, blocks, chunks, activeFrom);
 
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
     const SelectPass select = currentVariant()->select;
-    ContactHealth health[kMaxChunks];
-    // One chunk: its blocks' candidates, selected and evaluated in batches.
-    const auto pairChunk = [&](int chunk, std::size_t, std::size_t)
+    // Health per run of blocks, folded in block order (the order of a serial loop).
+    ContactHealth* const health = world.pairSchedule.runHealth.data();
+    // One run of consecutive blocks: their candidates, selected and evaluated in batches.
+    const auto pairRun = [&](const BlockRun& run) -> ContactHealth
     {
-        const std::size_t firstParticle = std::min(blockEdge[chunk] * B, n),
-                          endParticle = std::min(blockEdge[chunk + 1] * B, n);
-        // A block's sums are zeroed just before its first candidate, not the chunk's all at
+        const std::size_t firstParticle = std::min(run.first * B, n), endParticle = std::min(run.end * B, n);
+        // A block's sums are zeroed just before its first candidate, not the run's all at
         // once: a block's contacts add only into its own particles' sums (the cross-block
         // shares are deferred), so the sums are still in L2 when the contacts add to them
         // (a chunk's sums, 64 B a particle, do not fit in a 512 KB L2).
@@ -927,8 +958,7 @@ void pairForcesOfSlots(World& world, Real dt)
                     list.openCandidate(a);
             }
             zeroSums(sink, zeroedEnd, endParticle);
-            health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
-            return;
+            return ContactHealth{worst.ratio, worst.particle, worst.found, touchingCount};
         }
         // One pass: each touching candidate is appended (branch-free) to a batch, which runs when
         // full (selectTouching*). The selection stops at a block's first candidate, whose sums
@@ -958,10 +988,16 @@ void pairForcesOfSlots(World& world, Real dt)
                 zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[a]));
         }
         zeroSums(sink, zeroedEnd, endParticle);
-        health[chunk] = {worst.ratio, worst.particle, worst.found, touchingCount};
+        return ContactHealth{worst.ratio, worst.particle, worst.found, touchingCount};
     };
-    parallelChunks(static_cast<std::size_t>(chunks), chunks, pairChunk);
-    foldHealth(world.health, health, chunks, world.health.touchingPairs);
+    parallelChunks(static_cast<std::size_t>(chunks), chunks,
+                   [&](int chunk, std::size_t, std::size_t)
+                   {
+                       for (std::size_t r = 0; r < runs.size(); ++r)
+                           if (runs[r].chunk == chunk)
+                               health[r] = pairRun(runs[r]);
+                   });
+    foldHealth(world.health, health, static_cast<int>(runs.size()), world.health.touchingPairs);
 }
 
 } // namespace

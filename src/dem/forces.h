@@ -16,15 +16,6 @@ namespace veridem::dem
 /// world.health.
 void computePairForces(World& world, Real dt);
 
-/// Contact health of one chunk of particles (combined in chunk order by mergeWallHealth).
-struct ContactHealth
-{
-    Real maxOverlapRatio;        // largest overlap / radius in the chunk [-]
-    std::uint32_t worstParticle; // its particle (the first in slot order on ties)
-    bool found;                  // some contact of the chunk touched
-    std::size_t touching;        // contacts touching
-};
-
 /// Stage 4a, particles [begin, end): force and torque = pair sums + the incoming cross-block
 /// contacts, in slot order (bit-identical for any thread count).
 void addCrossBlockForces(World& world, std::size_t begin, std::size_t end);

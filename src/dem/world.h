@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/block_partition.h"
 #include "dem/materials.h"
 #include "dem/neighbor_list.h"
 #include "dem/particles.h"
@@ -26,6 +27,16 @@ struct StepHealth
     std::uint32_t firstNonFinite = 0; // first particle that is not
 };
 
+/// Contact health of one chunk of particles or run of blocks (combined in their order:
+/// mergeWallHealth, the pair stage).
+struct ContactHealth
+{
+    Real maxOverlapRatio;        // largest overlap / radius in the chunk [-]
+    std::uint32_t worstParticle; // its particle (the first in slot order on ties)
+    bool found;                  // some contact of the chunk touched
+    std::size_t touching;        // contacts touching
+};
+
 /// Wall-clock time spent in each stage of step() [s], accumulated while `enabled` (off by
 /// default: reading the clock costs ~20 ns a stage, which a one-ball run would notice).
 struct StepProfile
@@ -35,6 +46,17 @@ struct StepProfile
     double neighbours = 0;   // rebuild test + Verlet list rebuild + history merge
     double pairForces = 0;   // pair contacts, summed within blocks (stage 3)
     double particlePass = 0; // cross-block sums, wall contacts, kick (stage 4)
+};
+
+/// Which thread evaluates which block of the pair stage (block_partition.h), balanced by touching
+/// candidates; recomputed when the candidate sub-list, the slots or the thread count change.
+struct PairSchedule
+{
+    std::vector<BlockRun> runs;
+    int chunks = 0;
+    std::size_t subListRebuilds = 0, slotRebuilds = 0, particles = 0; // what it was made for
+    double heaviestShare = 0;             // the busiest thread's share of the candidates [-]
+    std::vector<ContactHealth> runHealth; // per run, written by its thread
 };
 
 struct World
@@ -50,6 +72,7 @@ struct World
     std::uint64_t stepCount = 0;
     StepHealth health;
     StepProfile profile;
+    PairSchedule pairSchedule;
     bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
                                       // the scalar path, which false selects; forces.cpp)
     bool prepared = false;
