@@ -852,12 +852,13 @@ namespace
 /// sub-list, the slots or the thread count changed. Weight of a block: its touching candidates
 /// (the selection and the kernel follow their count), a cross-block one counted three times. On
 /// the 20k bed two threads took 11-25 % longer on blocks 0-9 than on 10-19 (3000 steps, six runs),
-/// which hold 9.6 % more candidates but 55 % more cross-block ones: their deferred entries are
-/// stores scattered over memory, some into lines the other thread writes too. The weight 3 fits
-/// that measurement; it moves the boundary one block down, and the longer thread's time fell from
-/// 2.44-2.97 s to 2.12-2.40 s (the other thread now 1-14 % shorter). The order of the sums does not
-/// depend on the schedule: any split gives the same bits. `activeFrom`: particle -> its first
-/// candidate.
+/// which hold 9.6 % more candidates but 55 % more cross-block ones, whose partners lie in
+/// another block (rows further away in memory) and which store a deferred entry. The weight 3
+/// fits that measurement; it moves the boundary one block down, and the longer thread's time fell
+/// from 2.44-2.97 s to 2.12-2.40 s (the other thread now 1-14 % shorter). With the deferred
+/// entries in slot order (no longer interleaved between threads) the imbalance at the old
+/// boundary stayed (17-21 %), so it is not false sharing. The order of the sums does not depend on
+/// the schedule: any split gives the same bits. `activeFrom`: particle -> its first candidate.
 template <class ActiveFrom>
 const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, int chunks,
                                             const ActiveFrom& activeFrom)
@@ -1038,6 +1039,7 @@ void crossBlockSums(World& world, std::size_t begin, std::size_t end)
     const NeighborList& pairs = world.neighbors;
     const bool hasIncoming = !pairs.deferredForce.empty();
     const std::uint32_t* const start = pairs.incomingStart.data();
+    const std::uint32_t* const entry = pairs.incomingEntry.data();
     const Vec3* const deferredForce = pairs.deferredForce.data();
     const Vec3* const deferredTorque = pairs.deferredTorque.data();
     for (std::size_t i = begin; i < end; ++i)
@@ -1047,8 +1049,8 @@ void crossBlockSums(World& world, std::size_t begin, std::size_t end)
         if (hasIncoming)
             for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
             {
-                force += deferredForce[e];
-                torque += deferredTorque[e];
+                force += deferredForce[entry[e]];
+                torque += deferredTorque[entry[e]];
             }
         p.force[i] = force;
         p.torque[i] = torque;

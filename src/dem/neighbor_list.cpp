@@ -219,9 +219,9 @@ std::size_t NeighborList::memoryBytes() const
     return bytes(first) + bytes(second) + bytes(activeSpring) + bytes(activeRolling) +
            bytes(activeMayBeActive) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
            bytes(source_) + bytes(within_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferredForce) +
-           bytes(deferredTorque) + bytes(incomingStart) + bytes(forceSum) + bytes(torqueSum) +
-           bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) + bytes(positionAtBuild_) +
-           bytes(positionAtActiveBuild_);
+           bytes(deferredTorque) + bytes(incomingStart) + bytes(incomingEntry) + bytes(forceSum) +
+           bytes(torqueSum) + bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) +
+           bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -249,6 +249,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
         deferredIndex.clear();
         deferredForce.clear();
         deferredTorque.clear();
+        incomingEntry.clear();
         forgetCandidates();
         return;
     }
@@ -351,21 +352,25 @@ void NeighborList::rebuild(const ParticleStore& particles)
         // separated its old history then.
         forgetCandidates();
 
-    // Cross-block slots (the second particle in a later block), numbered by second particle and
-    // then slot: each particle's incoming entries are contiguous and in slot order.
+    // Cross-block slots (the second particle in a later block), numbered in slot order; each
+    // particle's incoming entries listed in slot order.
     deferredIndex.resize(pairCount);
+    std::uint32_t deferredCount = 0;
     for (std::size_t k = 0; k < pairCount; ++k)
-        if (first[k] / kBlockParticles != second[k] / kBlockParticles)
-            ++incomingStart[second[k] + 1];
+    {
+        const bool cross = first[k] / kBlockParticles != second[k] / kBlockParticles;
+        deferredIndex[k] = cross ? deferredCount++ : kInBlock;
+        incomingStart[second[k] + 1] += cross;
+    }
     for (std::size_t i = 0; i < n; ++i)
         incomingStart[i + 1] += incomingStart[i];
-    const std::uint32_t deferredCount = incomingStart[n];
     deferredForce.assign(deferredCount, Vec3{});
     deferredTorque.assign(deferredCount, Vec3{});
+    std::vector<std::uint32_t>(deferredCount).swap(incomingEntry);
     std::vector<std::uint32_t> fill(incomingStart.begin(), incomingStart.end() - 1);
     for (std::size_t k = 0; k < pairCount; ++k)
-        deferredIndex[k] =
-            first[k] / kBlockParticles != second[k] / kBlockParticles ? fill[second[k]]++ : kInBlock;
+        if (deferredIndex[k] != kInBlock)
+            incomingEntry[fill[second[k]]++] = deferredIndex[k];
 }
 
 } // namespace veridem::dem

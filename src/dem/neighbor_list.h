@@ -19,7 +19,7 @@
 // straight into both particles when both lie in the slot's block; a slot whose second particle lies
 // in a later block ("cross-block") adds into its first particle only and leaves the second
 // particle's share in the slot's `deferred` entry, which a per-particle pass adds afterwards in
-// ascending slot order (`incomingStart`). So every particle's sum has one fixed order:
+// ascending slot order (`incomingStart`, `incomingEntry`). So every particle's sum has one fixed order:
 // its in-block contacts in slot order, then its incoming cross-block contacts in slot order (then
 // its walls): the same bits for any number of threads, with no per-slot outputs for the ~85 % of
 // slots that stay inside a block.
@@ -59,15 +59,17 @@ class NeighborList
 
     // Cross-block slots. deferredIndex[k] is the slot's entry in deferredForce/deferredTorque, or
     // kInBlock. The entries hold, after the force loop, the force [N] and torque [N m] on the
-    // slot's second particle (zero while the slot is open). They are numbered by second particle,
-    // then slot: the particle pass reads them in sequence (the pair loop's writes scatter).
+    // slot's second particle (zero while the slot is open). They are numbered in slot order, so
+    // each block's are one range that the pair loop writes in sequence, and no two threads write
+    // into one cache line but at a range's ends (numbered by second particle, the writes of two
+    // threads interleaved; the particle pass now gathers through incomingEntry instead).
     static constexpr std::uint32_t kInBlock = 0xffffffffu;
     std::vector<std::uint32_t> deferredIndex;
     std::vector<Vec3> deferredForce;
     std::vector<Vec3> deferredTorque;
-    // Entries [incomingStart[p], incomingStart[p+1]) are those whose second particle is p, in
-    // ascending slot order.
-    std::vector<std::uint32_t> incomingStart;
+    // incomingEntry[incomingStart[p] .. incomingStart[p+1]) are the entries whose second particle is
+    // p, in ascending slot order.
+    std::vector<std::uint32_t> incomingStart, incomingEntry;
 
     // Touching candidates (STYLE: a two-level Verlet list). `activeSlots` holds, in ascending
     // order, the slots whose gap was below `innerSkin` when it was built; it is rebuilt from the
