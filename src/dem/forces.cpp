@@ -1042,6 +1042,10 @@ void crossBlockSums(World& world, std::size_t begin, std::size_t end)
     const std::uint32_t* const entry = pairs.incomingEntry.data();
     const Vec3* const deferredForce = pairs.deferredForce.data();
     const Vec3* const deferredTorque = pairs.deferredTorque.data();
+    // The entries are stored in slot order, so a particle's lie scattered: they are fetched
+    // kEntriesAhead entries before their use.
+    constexpr std::uint32_t kEntriesAhead = 16;
+    const std::uint32_t lastEntry = hasIncoming ? start[p.size()] - 1 : 0;
     for (std::size_t i = begin; i < end; ++i)
     {
         const NeighborList::Sum &f = pairs.forceSum[i], &t = pairs.torqueSum[i];
@@ -1049,6 +1053,9 @@ void crossBlockSums(World& world, std::size_t begin, std::size_t end)
         if (hasIncoming)
             for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
             {
+                const std::uint32_t ahead = entry[std::min(e + kEntriesAhead, lastEntry)];
+                __builtin_prefetch(&deferredForce[ahead]);
+                __builtin_prefetch(&deferredTorque[ahead]);
                 force += deferredForce[entry[e]];
                 torque += deferredTorque[entry[e]];
             }
