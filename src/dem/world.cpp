@@ -107,6 +107,17 @@ ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t 
     for (std::size_t s = begin; s < end; s += kFinishBlock)
     {
         const std::size_t e = std::min(s + kFinishBlock, end);
+        // The wall particles' rows (cold since the pair stage) on their way while the
+        // cross-block sums run: the wall pass waited on them.
+        const WallContactList& wallList = world.wallContacts;
+        if (wallList.start.size() == world.particles.size() + 1)
+            for (std::size_t k = wallList.start[s]; k < wallList.start[e]; ++k)
+            {
+                const std::uint32_t i = wallList.particle[k];
+                __builtin_prefetch(&world.particles.position[i]);
+                __builtin_prefetch(&world.particles.velocity[i]);
+                __builtin_prefetch(&world.particles.angularVelocity[i]);
+            }
         addCrossBlockForces(world, s, e);
         const ContactHealth walls = computeWallForces(world, dt, s, e);
         health.touching += walls.touching;
