@@ -74,18 +74,36 @@ Options parse(int argc, char** argv)
                 usage();
             return argv[++a];
         };
+        // A whole positive integer, or a message naming the option.
+        auto count = [&]() -> long
+        {
+            const std::string text = value();
+            std::size_t used = 0;
+            long n = 0;
+            try
+            {
+                n = std::stol(text, &used);
+            }
+            catch (const std::exception&)
+            {
+                used = 0;
+            }
+            if (used != text.size() || n < 1 || n > 1000000000L)
+                throw std::runtime_error(arg + ": expected a whole number from 1 to 1e9, got '" + text + "'");
+            return n;
+        };
         if (arg == "--scene")
             o.scene = value();
         else if (arg == "--file")
             o.file = value();
         else if (arg == "--tile")
-            o.tile = std::stoi(value());
+            o.tile = static_cast<int>(count());
         else if (arg == "--steps")
-            o.steps = std::stol(value());
+            o.steps = count();
         else if (arg == "--threads")
-            o.threads = std::stoi(value());
+            o.threads = static_cast<int>(count());
         else if (arg == "--repeat")
-            o.repeat = std::stoi(value());
+            o.repeat = static_cast<int>(count());
         else if (arg == "--no-sort")
             o.sort = false;
         else if (arg == "--profile")
@@ -93,6 +111,8 @@ Options parse(int argc, char** argv)
         else
             usage();
     }
+    if (o.scene != "bed" && o.scene != "gas" && o.scene != "turntable")
+        throw std::runtime_error("--scene: expected bed, gas or turntable, got '" + o.scene + "'");
     if (o.file.empty())
         o.file = std::string(VERIDEM_SHARED_BENCH_DIR) +
                  (o.scene == "gas" ? "/random_gas_20k.xyz" : "/settled_bed_20k.xyz");
@@ -129,13 +149,22 @@ std::vector<Vec3> readXyz(const std::string& path)
         throw std::runtime_error("cannot open " + path);
     std::vector<Vec3> points;
     std::string line;
-    while (std::getline(in, line))
+    for (long number = 1; std::getline(in, line); ++number)
     {
+        // Blank lines and lines starting with '#' are skipped; anything else must be x y z [m].
+        const std::size_t start = line.find_first_not_of(" \t\r");
+        if (start == std::string::npos || line[start] == '#')
+            continue;
         std::istringstream row(line);
         Vec3 x;
-        if (row >> x.x >> x.y >> x.z)
-            points.push_back(x);
+        std::string rest;
+        if (!(row >> x.x >> x.y >> x.z) || (row >> rest))
+            throw std::runtime_error(path + ":" + std::to_string(number) +
+                                     ": expected three numbers x y z [m], got '" + line + "'");
+        points.push_back(x);
     }
+    if (points.empty())
+        throw std::runtime_error(path + ": no sphere centres (expected lines of x y z [m])");
     return points;
 }
 
@@ -200,7 +229,9 @@ World turntableWorld()
 
 } // namespace
 
-int main(int argc, char** argv)
+namespace
+{
+int run(int argc, char** argv)
 {
     const Options o = parse(argc, argv);
 #ifdef _OPENMP
@@ -347,4 +378,19 @@ int main(int argc, char** argv)
         std::fflush(stdout);
     }
     return 0;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    // A missing or malformed input file is a message and exit status 1, not an abort.
+    try
+    {
+        return run(argc, argv);
+    }
+    catch (const std::exception& e)
+    {
+        std::fprintf(stderr, "veridem_bench: %s\n", e.what());
+        return 1;
+    }
 }
