@@ -25,10 +25,10 @@ namespace veridem::dem
 namespace
 {
 
-/// A jittered lattice of 13^3 = 2197 spheres (above kParallelThreshold, so two threads do split the loops) (r
-/// = 1 mm) with random velocities and spins, packed tightly in a box with a floor, so that many contacts open
-/// and close and slide within 1000 steps.
-World jostlingBox(bool sorted)
+/// A jittered lattice of side^3 (default 13^3 = 2197) spheres (above kParallelThreshold, so two threads do
+/// split the loops) (r = 1 mm) with random velocities and spins, packed tightly in a box with a floor, so
+/// that many contacts open and close and slide within 1000 steps.
+World jostlingBox(bool sorted, int side = 13)
 {
     World world;
     Material m;
@@ -38,7 +38,6 @@ World jostlingBox(bool sorted)
     m.friction = 0.5;
     world.addMaterial(m);
     world.neighbors.skin = 0.5e-3;
-    const int side = 13;
     const Real spacing = 2.05e-3, box = side * spacing;
     auto plane = [](Vec3 point, Vec3 normal)
     {
@@ -64,7 +63,7 @@ World jostlingBox(bool sorted)
     return world;
 }
 
-World runOn(int threads, int steps)
+World runOn(int threads, int steps, int side = 13)
 {
 #ifdef _OPENMP
     const int previous = omp_get_max_threads();
@@ -72,7 +71,7 @@ World runOn(int threads, int steps)
 #else
     (void)threads;
 #endif
-    World world = jostlingBox(true);
+    World world = jostlingBox(true, side);
     for (int s = 0; s < steps; ++s)
         step(world, 1e-5);
 #ifdef _OPENMP
@@ -100,6 +99,37 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBitsAfter1000Steps)
     EXPECT_TRUE(sameBits(one.neighbors.activeSpring, two.neighbors.activeSpring)); // the history
     EXPECT_EQ(one.health.maxOverlapRatio, two.health.maxOverlapRatio);
     EXPECT_EQ(one.health.worstParticle, two.health.worstParticle);
+}
+
+/// Blocks are independent (block_partition.h), so any split of them among threads gives the same
+/// bits. A 17^3 box has five blocks (four of 1024 particles and one of 817): two threads split them
+/// 2 + 3, three threads 1 + 2 + 2 (300 steps: contacts open, close and slide by then).
+TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
+{
+#ifndef _OPENMP
+    GTEST_SKIP() << "built without OpenMP";
+#endif
+    constexpr int side = 17, steps = 300;
+    World one = runOn(1, steps, side);
+    World two = runOn(2, steps, side);
+    World three = runOn(3, steps, side);
+    ASSERT_EQ((one.particles.size() + NeighborList::kBlockParticles - 1) / NeighborList::kBlockParticles, 5u);
+    ASSERT_EQ(two.pairSchedule.runs.size(), 2u);
+    ASSERT_EQ(three.pairSchedule.runs.size(), 3u);
+    EXPECT_NE(two.pairSchedule.runs[0].end, three.pairSchedule.runs[1].end) // different boundaries
+        << two.pairSchedule.runs[0].end << " " << three.pairSchedule.runs[0].end << " "
+        << three.pairSchedule.runs[1].end;
+    EXPECT_GT(one.health.touchingPairs, 0u);
+    for (const World* w : {&two, &three})
+    {
+        EXPECT_TRUE(sameBits(one.particles.position, w->particles.position));
+        EXPECT_TRUE(sameBits(one.particles.velocity, w->particles.velocity));
+        EXPECT_TRUE(sameBits(one.particles.angularVelocity, w->particles.angularVelocity));
+        EXPECT_TRUE(sameBits(one.neighbors.activeSpring, w->neighbors.activeSpring));
+        EXPECT_EQ(one.health.maxOverlapRatio, w->health.maxOverlapRatio);
+        EXPECT_EQ(one.health.worstParticle, w->health.worstParticle);
+        EXPECT_EQ(one.health.touchingPairs, w->health.touchingPairs);
+    }
 }
 
 /// The lane contact path (forces.cpp) performs the scalar contact law's operations lane by lane:
