@@ -20,6 +20,7 @@
 #include "dem/world.h"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -78,17 +79,10 @@ Options parse(int argc, char** argv)
         auto count = [&]() -> long
         {
             const std::string text = value();
-            std::size_t used = 0;
             long n = 0;
-            try
-            {
-                n = std::stol(text, &used);
-            }
-            catch (const std::exception&)
-            {
-                used = 0;
-            }
-            if (used != text.size() || n < 1 || n > 1000000000L)
+            const char* const last = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), last, n);
+            if (error != std::errc() || stop != last || n < 1 || n > 1000000000L)
                 throw std::runtime_error(arg + ": expected a whole number from 1 to 1e9, got '" + text + "'");
             return n;
         };
