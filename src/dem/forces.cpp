@@ -682,6 +682,31 @@ void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const PairPar
     lawLanes<Lanes2>(b, count, dt, uniform);
 }
 
+/// For each 4-bit mask of lanes, the byte shuffle that moves the 32-bit lanes whose bit is set to
+/// the front, in lane order (the rest zeroed).
+struct PackLanesTable
+{
+    alignas(16) std::uint8_t bytes[16][16];
+    constexpr PackLanesTable() : bytes{}
+    {
+        for (unsigned mask = 0; mask < 16; ++mask)
+        {
+            unsigned out = 0;
+            for (unsigned lane = 0; lane < 4; ++lane)
+                if (mask & (1u << lane))
+                {
+                    for (unsigned byte = 0; byte < 4; ++byte)
+                        bytes[mask][4 * out + byte] = static_cast<std::uint8_t>(4 * lane + byte);
+                    ++out;
+                }
+            for (unsigned byte = 4 * out; byte < 16; ++byte)
+                bytes[mask][byte] = 0x80; // (pshufb: zero)
+        }
+    }
+};
+constexpr PackLanesTable kPackLanesTable;
+const __m128i* const kPackLanes = reinterpret_cast<const __m128i*>(kPackLanesTable.bytes);
+
 /// selectTouchingScalar with the distance test of four candidates in AVX2 lanes (the same IEEE
 /// operations, so the same choices); the bookkeeping stays per candidate, branch-free.
 VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::size_t a, std::size_t zeroedEnd,
@@ -709,17 +734,25 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
         const Lanes4 distance2 = sx * sx + sy * sy + sz * sz;
         const unsigned touchingLanes = static_cast<unsigned>(
             _mm256_movemask_pd(reinterpret_cast<__m256d>(distance2 < touching * touching)));
-        for (std::size_t l = 0; l < 4; ++l)
-        {
-            const std::uint32_t k = static_cast<std::uint32_t>(a + l);
-            const unsigned isTouching = (touchingLanes >> l) & 1u;
-            b.candidate[touchingEnd] = k;
-            b.i[touchingEnd] = laneI[l];
-            b.j[touchingEnd] = laneJ[l];
-            touchingEnd += isTouching;
-            opened[openedEnd] = k;
-            openedEnd += mayBeActive[k] & (isTouching ^ 1u);
-        }
+        // The touching lanes' (candidate, i, j), packed in lane order to the front of one 16-byte
+        // store each (the loop keeps four entries of room), instead of twelve scalar stores.
+        const __m128i pack = _mm_load_si128(&kPackLanes[touchingLanes]);
+        const __m128i candidates =
+            _mm_add_epi32(_mm_set1_epi32(static_cast<int>(a)), _mm_setr_epi32(0, 1, 2, 3));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(b.candidate + touchingEnd),
+                         _mm_shuffle_epi8(candidates, pack));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(b.i + touchingEnd),
+                         _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(laneI)), pack));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(b.j + touchingEnd),
+                         _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(laneJ)), pack));
+        touchingEnd += static_cast<std::size_t>(__builtin_popcount(touchingLanes));
+        // Lanes that may have been in contact and do not touch now (rare): recorded in lane order.
+        std::uint32_t mayBytes;
+        std::memcpy(&mayBytes, mayBeActive + a, sizeof mayBytes); // four 0/1 flags
+        for (unsigned open = _pext_u32(mayBytes, 0x01010101u) & ~touchingLanes & 0xfu; open != 0;
+             open &= open - 1)
+            opened[openedEnd++] =
+                static_cast<std::uint32_t>(a) + static_cast<std::uint32_t>(__builtin_ctz(open));
     }
     m = touchingEnd;
     o = openedEnd;

@@ -82,10 +82,10 @@ class NeighborList
     std::vector<std::uint32_t> activeSlots;
     // Per candidate a (slot activeSlots[a]), what the force loop reads and writes, in sequence
     // instead of scattered over all slots: first[] and second[]; the contact history (tangential
-    // spring [m], rolling spring [N m] only if keepRollingHistory, and whether it may be non-zero:
-    // cleared when the contact is found open, so an open candidate is written once, not every
-    // step); m* = m_i m_j / (m_i + m_j) [kg] (the contact law's expression, so the same bits); the
-    // slot's deferredIndex.
+    // spring [m], rolling spring [N m] only if keepRollingHistory, and whether it may be non-zero, 0
+    // or 1 (the selection pass reads four flags as bits): cleared when the contact is found open,
+    // so an open candidate is written once, not every step; m* = m_i m_j / (m_i + m_j) [kg] (the contact
+    // law's expression, so the same bits); the slot's deferredIndex.
     std::vector<std::uint32_t> activeFirst, activeSecond;
     std::vector<Vec3> activeSpring, activeRolling;
     std::vector<std::uint8_t> activeMayBeActive;
