@@ -708,7 +708,8 @@ constexpr PackLanesTable kPackLanesTable;
 const __m128i* const kPackLanes = reinterpret_cast<const __m128i*>(kPackLanesTable.bytes);
 
 /// selectTouchingScalar with the distance test of four candidates in AVX2 lanes (the same IEEE
-/// operations, so the same choices); the bookkeeping stays per candidate, branch-free.
+/// operations, so the same choices) and their bookkeeping four at a time: the touching ones packed
+/// by a byte shuffle, the opened ones (rare) from a bit mask, both in candidate order as there.
 VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::size_t a, std::size_t zeroedEnd,
                                                    PairBatch& b, std::size_t& m, std::uint32_t* opened,
                                                    std::size_t& o)
