@@ -49,7 +49,8 @@ struct StepProfile
 };
 
 /// Which thread evaluates which block of the pair stage (block_partition.h), balanced by touching
-/// candidates; recomputed when the candidate sub-list, the slots or the thread count change.
+/// candidates, a cross-block one counting three (forces.cpp, scheduleBlocks); recomputed when the
+/// candidate sub-list, the slots or the thread count change.
 struct PairSchedule
 {
     std::vector<BlockRun> runs;
