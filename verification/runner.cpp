@@ -66,8 +66,12 @@ bool selected(const Case& c, const RunRequest& r)
 
 void writeSeries(const std::filesystem::path& dir, const Series& s)
 {
-    std::filesystem::create_directories(dir);
+    std::error_code failed;
+    std::filesystem::create_directories(dir, failed);
     std::ofstream out(dir / (s.name + ".csv"));
+    if (failed || !out)
+        throw InputError("cannot write the series '" + (dir / (s.name + ".csv")).string() + "'" +
+                         (failed ? ": " + failed.message() : std::string()));
     for (std::size_t i = 0; i < s.columns.size(); ++i)
         out << (i ? "," : "") << s.columns[i];
     out << "\n" << std::setprecision(12);
@@ -114,6 +118,17 @@ int runCases(const RunRequest& request)
                              (nearest.empty() ? "" : " (did you mean '" + nearest + "'?)") +
                              "; `veridem verify --list` shows them all");
         }
+    }
+
+    // The output directory is made before any case runs, so that a path that cannot hold it is
+    // an error now, not after minutes of cases (and not on the reporting thread while workers run).
+    if (request.seriesDir)
+    {
+        std::error_code failed;
+        std::filesystem::create_directories(*request.seriesDir, failed);
+        if (failed)
+            throw InputError("cannot create the output directory '" + *request.seriesDir +
+                             "': " + failed.message());
     }
 
     std::vector<const Case*> chosen;
@@ -173,9 +188,23 @@ int runCases(const RunRequest& request)
             finished.notify_all();
         }
     };
-    std::vector<std::thread> workers;
+    // Joined on every way out: an exception on this thread (a series that cannot be written) must
+    // not destroy running threads, which would end the program; the workers take no further case.
+    struct Workers
+    {
+        std::vector<std::thread> threads;
+        std::atomic<std::size_t>& next;
+        std::size_t count;
+        ~Workers()
+        {
+            next = count;
+            for (auto& t : threads)
+                if (t.joinable())
+                    t.join();
+        }
+    } workers{{}, next, chosen.size()};
     for (std::size_t w = 0; w < jobs; ++w)
-        workers.emplace_back(worker);
+        workers.threads.emplace_back(worker);
 
     std::printf("%-30s %-26s %14s %14s %10s %11s %s\n", "case", "quantity", "theory", "measured", "error",
                 "tolerance", "result");
@@ -203,7 +232,7 @@ int runCases(const RunRequest& request)
             for (const auto& s : o.result.series)
                 writeSeries(std::filesystem::path(*request.seriesDir) / c.name, s);
     }
-    for (auto& w : workers)
+    for (auto& w : workers.threads)
         w.join();
 
     int failed = 0;
