@@ -120,4 +120,9 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "veridem: simulation stopped: %s\n", e.what());
         return 3;
     }
+    catch (const std::exception& e) // anything else (a file system error, memory): a message, not an abort
+    {
+        std::fprintf(stderr, "veridem: error: %s\n", e.what());
+        return 1;
+    }
 }
