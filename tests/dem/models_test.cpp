@@ -75,6 +75,22 @@ TEST(Tangential, ProjectionKeepsMagnitude)
     EXPECT_NEAR(dot(p, n), 0, 1e-14);
 }
 
+TEST(Tangential, SpringAlreadyInThePlaneIsReturnedUnchanged)
+{
+    // A flat wall's normal is (0, 0, 1) exactly, the spring's z is then exactly 0 and the
+    // projection's rescaling factor sqrt(|xi|^2 / |xi_t|^2) is exactly 1: the short cut that
+    // skips it must give the bits of the full formula.
+    const Vec3 spring{1.25e-7, -3.5e-8, 0}, n{0, 0, 1};
+    const Vec3 p = projectSpringToTangentPlane(spring, n);
+    const Vec3 projected = spring - dot(spring, n) * n;
+    const Vec3 full = projected * std::sqrt(lengthSquared(spring) / lengthSquared(projected));
+    EXPECT_EQ(p.x, full.x);
+    EXPECT_EQ(p.y, full.y);
+    EXPECT_EQ(p.z, full.z);
+    EXPECT_EQ(p.x, spring.x);
+    EXPECT_EQ(p.y, spring.y);
+}
+
 TEST(Rolling, ConstantTorqueOpposesRelativeSpinWithMagnitudeMuRFn)
 {
     const Vec3 w{0, 3, 4}; // |w| = 5, twisting part included
