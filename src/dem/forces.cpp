@@ -1120,11 +1120,11 @@ namespace
 
 /// The contact input of particle i touching `wall` (gap from wallGap), as the contact law takes
 /// it; `arm` is set to the lever arm from the centre to the contact point [m].
-VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleStore& p, const Wall& wall, std::uint32_t i,
-                                                 const WallGap& gap, Real dt, Vec3& arm)
+VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const Wall& wall, const WallGap& gap,
+                                                 Real dt, Vec3& arm)
 {
-    const Real r = p.radius[i];
-    const Vec3 position = p.position[i], velocity = p.velocity[i], angularVelocity = p.angularVelocity[i];
+    const Real r = s.radius;
+    const Vec3 position = s.position, velocity = s.velocity, angularVelocity = s.angularVelocity;
     ContactInput in;
     in.normal = gap.normal;
     in.overlap = gap.overlap;
@@ -1137,9 +1137,9 @@ VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleStore& p, const W
     in.relativeVelocity =
         velocity + cross(angularVelocity, arm) - wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
     in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
-    in.effectiveMass = p.mass[i];
+    in.effectiveMass = s.mass;
     in.effectiveRadius = gap.effectiveRadius;
-    in.spinInertia = 1.0 / p.invInertia[i];
+    in.spinInertia = 1.0 / s.invInertia;
     return in;
 }
 
@@ -1192,7 +1192,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         }
         ++health.touching;
         Vec3 arm;
-        const ContactInput in = wallContactInput(p, wall, i, gap, dt, arm);
+        const ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
         const Vec3 spring = list.tangentialSpring[k];
         b.slot[m] = static_cast<std::uint32_t>(k);
         b.particle[m] = i;
@@ -1217,6 +1217,38 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     return health;
 }
 
+/// Wall contact k of the particle whose state is `s`, through the general contact law (any
+/// model): updates the contact's history (cleared if it is not touching); if it touches, adds its
+/// force [N] and torque [N m] to `force` and `torque` and folds it into `health`.
+VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, std::uint32_t i,
+                                          const ParticleState& s, Vec3& force, Vec3& torque,
+                                          ContactHealth& health)
+{
+    WallContactList& list = world.wallContacts;
+    const Wall& wall = world.walls[list.wall[k]];
+    const WallGap gap = wallGap(wall, s.position, s.radius);
+    if (!gap.touching)
+    {
+        list.setHistory(k, ContactHistory{});
+        return;
+    }
+    ++health.touching;
+    const PairParams& params = world.pairs(s.material, wall.material);
+    Vec3 arm;
+    ContactInput in = wallContactInput(s, wall, gap, dt, arm);
+    if (params.rollingModel == RollingModel::Epsd)
+        in.rollingInertia = in.spinInertia + s.mass * s.radius * s.radius;
+
+    ContactHistory history = list.history(k);
+    const ContactOutput out = evaluateContact(params, in, history, dt);
+    list.setHistory(k, history);
+    force += out.force;
+    torque += out.rollingTorque + cross(arm, out.tangentialForce);
+    const Real ratio = in.overlap / s.radius;
+    if (ratio > health.maxOverlapRatio)
+        health = {ratio, i, true, health.touching};
+}
+
 } // namespace
 
 ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::size_t end)
@@ -1231,27 +1263,20 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
         const std::uint32_t i = list.particle[k];
-        const Wall& wall = world.walls[list.wall[k]];
-        const Real r = p.radius[i];
-        const WallGap gap = wallGap(wall, p.position[i], r);
-        if (!gap.touching)
-        {
-            list.setHistory(k, ContactHistory{});
-            continue;
-        }
-        ++health.touching;
-        const PairParams& params = world.pairs(p.material[i], wall.material);
-        Vec3 arm;
-        ContactInput in = wallContactInput(p, wall, i, gap, dt, arm);
-        if (params.rollingModel == RollingModel::Epsd)
-            in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
-
-        ContactHistory history = list.history(k);
-        const ContactOutput out = evaluateContact(params, in, history, dt);
-        list.setHistory(k, history);
-        addWallContact(p, i, out.force, out.rollingTorque + cross(arm, out.tangentialForce), in.overlap,
-                       health);
+        wallContactScalar(world, dt, k, i, particleState(p, i), p.force[i], p.torque[i], health);
     }
+    return health;
+}
+
+ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
+                             Vec3& torque)
+{
+    const WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    if (list.size() == 0 || list.start.size() != world.particles.size() + 1)
+        return health;
+    for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k)
+        wallContactScalar(world, dt, k, i, s, force, torque, health);
     return health;
 }
 

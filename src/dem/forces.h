@@ -23,6 +23,13 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end);
 /// Stage 4b, particles [begin, end): adds each one's touching wall contacts, in slot order.
 ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::size_t end);
 
+/// The wall contacts of particle i (its slots in world.wallContacts, in slot order) through the
+/// general contact law, with its state read from `s` instead of the store (the one-particle step
+/// holds it in registers): their forces [N] and torques [N m] added to `force` and `torque`, the
+/// operations of computeWallForces. Returns their health.
+ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
+                             Vec3& torque);
+
 /// Folds per-chunk wall health into world health in chunk order (sets touchingWalls).
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks);
 

@@ -2,6 +2,7 @@
 // angular velocity needs no orientation). a = F/m + g, dw/dt = T/I.
 #pragma once
 
+#include "core/hot.h"
 #include "dem/parallel.h"
 #include "dem/particles.h"
 #include "dem/walls/wall.h"
@@ -41,18 +42,28 @@ struct IntegrationArrays
     }
 };
 
-/// Particles [begin, end): v += dt/2 a; w += dt/2 alpha; x += dt v, folding each one's squared
-/// displacement from the two `reference` positions into `m` (skipped if reference.built is null).
+/// One particle's first half kick and drift: v += dt/2 (F/m + g); w += dt/2 T/I; x += dt v.
+/// force [N], torque [N m], invMass [1/kg], invInertia [1/(kg m^2)], gravity [m/s^2], dt [s].
+VERIDEM_HOT_INLINE void kickDriftOne(Vec3& position, Vec3& velocity, Vec3& angularVelocity, const Vec3& force,
+                                     const Vec3& torque, Real invMass, Real invInertia, const Vec3& gravity,
+                                     Real dt)
+{
+    const Real half = 0.5 * dt;
+    velocity += half * (force * invMass + gravity);
+    angularVelocity += (half * invInertia) * torque;
+    position += dt * velocity;
+}
+
+/// Particles [begin, end): kickDriftOne, folding each one's squared displacement from the two
+/// `reference` positions into `m` (skipped if reference.built is null).
 inline Motion kickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
                              NeighborList::MotionReference reference, std::size_t begin, std::size_t end,
                              Motion m)
 {
-    const Real half = 0.5 * dt;
     for (std::size_t i = begin; i < end; ++i)
     {
-        p.velocity[i] += half * (p.force[i] * p.invMass[i] + gravity);
-        p.angularVelocity[i] += (half * p.invInertia[i]) * p.torque[i];
-        p.position[i] += dt * p.velocity[i];
+        kickDriftOne(p.position[i], p.velocity[i], p.angularVelocity[i], p.force[i], p.torque[i],
+                     p.invMass[i], p.invInertia[i], gravity, dt);
         if (reference.built)
         {
             m.sinceBuild2 = std::max(m.sinceBuild2, lengthSquared(p.position[i] - reference.built[i]));
@@ -104,35 +115,41 @@ inline void recordFirstNonFinite(const ParticleStore& p, StepHealth& health)
         }
 }
 
-/// Particles [begin, end): v += dt/2 a; w += dt/2 alpha. Returns false if some position or
-/// velocity of the range is not finite (recordFirstNonFinite finds it).
-inline bool kickRange(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end)
+/// One particle's second half kick: v += dt/2 (F/m + g); w += dt/2 T/I (arguments as
+/// kickDriftOne). Returns false if its position or velocities are not finite.
+VERIDEM_HOT_INLINE bool kickOne(const Vec3& position, Vec3& velocity, Vec3& angularVelocity,
+                                const Vec3& force, const Vec3& torque, Real invMass, Real invInertia,
+                                const Vec3& gravity, Real dt)
 {
     const Real half = 0.5 * dt;
+    const Real halfInvInertia = half * invInertia;
+    const Real vx = velocity.x + half * (force.x * invMass + gravity.x),
+               vy = velocity.y + half * (force.y * invMass + gravity.y),
+               vz = velocity.z + half * (force.z * invMass + gravity.z);
+    const Real wx = angularVelocity.x + halfInvInertia * torque.x,
+               wy = angularVelocity.y + halfInvInertia * torque.y,
+               wz = angularVelocity.z + halfInvInertia * torque.z;
+    velocity = {vx, vy, vz};
+    angularVelocity = {wx, wy, wz};
+    // 0 * a is 0 for every finite a and NaN for inf and NaN: one sum of nine such products
+    // is 0 exactly when all nine components are finite (no branch per component).
+    const Vec3 x = position;
+    const Real probe = (0.0 * x.x + 0.0 * x.y + 0.0 * x.z) + (0.0 * vx + 0.0 * vy + 0.0 * vz) +
+                       (0.0 * wx + 0.0 * wy + 0.0 * wz);
+    return probe == 0.0;
+}
+
+/// Particles [begin, end): kickOne. Returns false if some position or velocity of the range is
+/// not finite (recordFirstNonFinite finds it).
+inline bool kickRange(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t begin, std::size_t end)
+{
     const Vec3 g = gravity; // (a copy: a store to a particle could alias the reference)
     const IntegrationArrays a(p);
-    const Vec3* const position = a.position;
-    Vec3* const velocity = a.velocity;
-    Vec3* const angularVelocity = a.angularVelocity;
     bool finite = true;
     for (std::size_t i = begin; i < end; ++i)
-    {
-        const Real im = a.invMass[i], halfInvInertia = half * a.invInertia[i];
-        const Real vx = velocity[i].x + half * (a.force[i].x * im + g.x),
-                   vy = velocity[i].y + half * (a.force[i].y * im + g.y),
-                   vz = velocity[i].z + half * (a.force[i].z * im + g.z);
-        const Real wx = angularVelocity[i].x + halfInvInertia * a.torque[i].x,
-                   wy = angularVelocity[i].y + halfInvInertia * a.torque[i].y,
-                   wz = angularVelocity[i].z + halfInvInertia * a.torque[i].z;
-        velocity[i] = {vx, vy, vz};
-        angularVelocity[i] = {wx, wy, wz};
-        // 0 * a is 0 for every finite a and NaN for inf and NaN: one sum of nine such products
-        // is 0 exactly when all nine components are finite (no branch per component).
-        const Vec3 x = position[i];
-        const Real probe = (0.0 * x.x + 0.0 * x.y + 0.0 * x.z) + (0.0 * vx + 0.0 * vy + 0.0 * vz) +
-                           (0.0 * wx + 0.0 * wy + 0.0 * wz);
-        finite = finite & (probe == 0.0);
-    }
+        finite = kickOne(a.position[i], a.velocity[i], a.angularVelocity[i], a.force[i], a.torque[i],
+                         a.invMass[i], a.invInertia[i], g, dt) &
+                 finite;
     return finite;
 }
 

@@ -54,4 +54,23 @@ struct ParticleStore
     }
 };
 
+/// One particle as the contact code reads it: copied from the store (particleState) or held in a
+/// caller's registers between the stages of a step (the one-particle step, world.cpp).
+struct ParticleState
+{
+    Vec3 position;        // [m]
+    Vec3 velocity;        // [m/s]
+    Vec3 angularVelocity; // [rad/s]
+    Real radius;          // [m]
+    Real mass;            // [kg]
+    Real invInertia;      // [1/(kg m^2)]
+    std::uint32_t material;
+};
+
+inline ParticleState particleState(const ParticleStore& p, std::size_t i)
+{
+    return {p.position[i], p.velocity[i],   p.angularVelocity[i], p.radius[i],
+            p.mass[i],     p.invInertia[i], p.material[i]};
+}
+
 } // namespace veridem::dem

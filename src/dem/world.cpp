@@ -172,6 +172,44 @@ bool integrationInLanes(const World& world)
            std::strcmp(laneKernelName(), "avx2") == 0;
 }
 
+/// step() for a world of one particle (a single-ball verification run): the same stages in the
+/// same order with the same operations, so the same bits, but the particle's state stays in
+/// registers from the kick-drift to the kick instead of being stored by one stage and loaded by
+/// the next (docs/performance.md: twice the steps per second). A single particle has no pair slots,
+/// so stage 3 only resets the pair health.
+void stepOneParticle(World& world, Real dt)
+{
+    ParticleStore& p = world.particles;
+    ParticleState s = particleState(p, 0);
+    const Real invMass = p.invMass[0];
+    const Vec3 gravity = world.gravity;
+    kickDriftOne(s.position, s.velocity, s.angularVelocity, p.force[0], p.torque[0], invMass, s.invInertia,
+                 gravity, dt);
+    p.position[0] = s.position;
+    p.velocity[0] = s.velocity;
+    p.angularVelocity[0] = s.angularVelocity;
+    Motion moved; // (as kickDriftRange measures it)
+    if (const NeighborList::MotionReference reference = world.neighbors.motionReference(1); reference.built)
+        moved = {std::max(Real{0}, lengthSquared(s.position - reference.built[0])),
+                 std::max(Real{0}, lengthSquared(s.position - reference.activeBuilt[0]))};
+    moveWalls(world.walls, dt);
+    if (contactListsNeedRebuild(world, moved))
+        rebuildContactLists(world);
+    computePairForces(world, dt); // (no pair slots: resets the pair health)
+
+    Vec3 force{}, torque{}; // the pair sums are zero (addCrossBlockForces)
+    const ContactHealth walls = wallContactsOf(world, dt, 0, s, force, torque);
+    p.force[0] = force;
+    p.torque[0] = torque;
+    mergeWallHealth(world.health, &walls, 1);
+    world.health.finite =
+        kickOne(s.position, s.velocity, s.angularVelocity, force, torque, invMass, s.invInertia, gravity, dt);
+    p.velocity[0] = s.velocity;
+    p.angularVelocity[0] = s.angularVelocity;
+    if (!world.health.finite)
+        recordFirstNonFinite(p, world.health);
+}
+
 } // namespace
 
 void prepare(World& world)
@@ -205,6 +243,14 @@ void step(World& world, Real dt)
 {
     if (!world.prepared)
         prepare(world);
+
+    if (world.particles.size() == 1 && !world.profile.enabled)
+    {
+        stepOneParticle(world, dt); // the stages below for one particle, its state in registers
+        world.time += dt;
+        ++world.stepCount;
+        return;
+    }
 
     StageClock clock(world.profile);
 
