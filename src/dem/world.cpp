@@ -85,7 +85,7 @@ bool contactListsNeedRebuild(World& world, const Motion& moved)
            world.wallContacts.needsRebuild(world.walls, world.neighbors.skin);
 }
 
-void rebuildContactLists(World& world)
+[[gnu::noinline, gnu::cold]] void rebuildContactLists(World& world)
 {
     world.neighbors.rebuild(world.particles);
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin);
@@ -193,9 +193,10 @@ void stepOneParticle(World& world, Real dt)
         moved = {std::max(Real{0}, lengthSquared(s.position - reference.built[0])),
                  std::max(Real{0}, lengthSquared(s.position - reference.activeBuilt[0]))};
     moveWalls(world.walls, dt);
-    if (contactListsNeedRebuild(world, moved))
+    if (contactListsNeedRebuild(world, moved)) [[unlikely]]
         rebuildContactLists(world);
-    computePairForces(world, dt); // (no pair slots: resets the pair health)
+    world.health.maxOverlapRatio = 0; // stage 3 (computePairForces) without pair slots: it only
+    world.health.touchingPairs = 0;   // resets the pair health (one particle has no pairs)
 
     Vec3 force{}, torque{}; // the pair sums are zero (addCrossBlockForces)
     const ContactHealth walls = wallContactsOf(world, dt, 0, s, force, torque);
