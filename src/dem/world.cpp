@@ -15,6 +15,8 @@
 // The dashpots and the tangential-spring increment use the half-step velocities: the spring
 // increment vt dt is then exactly the relative displacement over [t, t+dt]. Output never happens
 // here; the driver records the world between steps.
+//
+// A world of one particle takes stepOneParticle: these stages, the ball's state kept in registers.
 #include "dem/world.h"
 
 #include "core/error.h"
@@ -175,8 +177,8 @@ bool integrationInLanes(const World& world)
 /// step() for a world of one particle (a single-ball verification run): the same stages in the
 /// same order with the same operations, so the same bits, but the particle's state stays in
 /// registers from the kick-drift to the kick instead of being stored by one stage and loaded by
-/// the next (docs/performance.md: twice the steps per second). A single particle has no pair slots,
-/// so stage 3 only resets the pair health.
+/// the next (docs/performance.md, session 11: ~1.4x the steps per second). A single particle has no pair
+/// slots, so stage 3 only resets the pair health.
 void stepOneParticle(World& world, Real dt)
 {
     ParticleStore& p = world.particles;
