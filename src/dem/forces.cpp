@@ -1143,15 +1143,22 @@ VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const W
     return in;
 }
 
+/// Folds the overlap [m] of a touching wall contact of particle i (radius [m]) into `health`: the
+/// first contact of the largest overlap ratio is kept.
+VERIDEM_HOT_INLINE void foldWallOverlap(std::uint32_t i, Real overlap, Real radius, ContactHealth& health)
+{
+    const Real ratio = overlap / radius;
+    if (ratio > health.maxOverlapRatio)
+        health = {ratio, i, true, health.touching};
+}
+
 /// Adds one wall contact's force and torque to particle i and folds its overlap into `health`.
 void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const Vec3& torque, Real overlap,
                     ContactHealth& health)
 {
     p.force[i] += force;
     p.torque[i] += torque;
-    const Real ratio = overlap / p.radius[i];
-    if (ratio > health.maxOverlapRatio)
-        health = {ratio, i, true, health.touching};
+    foldWallOverlap(i, overlap, p.radius[i], health);
 }
 
 /// computeWallForces when every contact takes the lane law: the inputs are computed per contact
@@ -1244,9 +1251,7 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
     list.setHistory(k, history);
     force += out.force;
     torque += out.rollingTorque + cross(arm, out.tangentialForce);
-    const Real ratio = in.overlap / s.radius;
-    if (ratio > health.maxOverlapRatio)
-        health = {ratio, i, true, health.touching};
+    foldWallOverlap(i, in.overlap, s.radius, health);
 }
 
 } // namespace
