@@ -237,10 +237,14 @@ struct LaneParams
 };
 
 /// A batch of touching pair contacts: their candidate indices (NeighborList::activeSlots) and
-/// particles (the kernel loads the rest straight into lanes).
+/// particles, and the geometry the selection pass computed for its distance test: the separation
+/// x_i - x_j [m] and the radii r_i, r_j [m] (the same values the kernel would compute again, so
+/// it reads them here instead of gathering both particles' positions and radii a second time).
+/// The kernel loads the rest straight into lanes.
 struct PairBatch
 {
     std::uint32_t candidate[kBatch], i[kBatch], j[kBatch];
+    alignas(32) double sx[kBatch], sy[kBatch], sz[kBatch], ri[kBatch], rj[kBatch];
 };
 
 /// Lanes l = a[index[l]].*field (element loads and inserts, no staging through memory).
@@ -328,6 +332,11 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
         b.candidate[touchingEnd] = k;
         b.i[touchingEnd] = i;
         b.j[touchingEnd] = j;
+        b.sx[touchingEnd] = sx;
+        b.sy[touchingEnd] = sy;
+        b.sz[touchingEnd] = sz;
+        b.ri[touchingEnd] = ri;
+        b.rj[touchingEnd] = rj;
         touchingEnd += isTouching;
         opened[openedEnd] = k; // kept if it was in contact and is no more (rare)
         openedEnd += mayBeActive[k] & static_cast<std::uint8_t>(!isTouching);
@@ -540,11 +549,11 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         b.candidate[m] = b.candidate[count - 1];
         b.i[m] = b.i[count - 1];
         b.j[m] = b.j[count - 1];
+        for (double* a : {b.sx, b.sy, b.sz, b.ri, b.rj})
+            a[m] = a[count - 1];
     }
-    const Vec3* const position = p.position.data();
     const Vec3* const velocity = p.velocity.data();
     const Vec3* const angularVelocity = p.angularVelocity.data();
-    const Real* const radius = p.radius.data();
     const Real* const candidateMass = list.activeMass.data();
     // In three passes over the batch, group by group: the contact inputs, the law, the scatter.
     // Each pass's body is short enough for the out-of-order core to overlap one group's chain of
@@ -575,9 +584,9 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
             for (std::size_t l = 0; l < kLanes; ++l)
                 fetch(m + kFetchAhead + l);
         const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.candidate + m;
-        const Lanes3<Lanes> xi = gatherVec3<Lanes>(position, laneI), xj = gatherVec3<Lanes>(position, laneJ);
-        const Lanes sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-        const Lanes ri = gather<Lanes>(radius, laneI), rj = gather<Lanes>(radius, laneJ);
+        // x_i - x_j and the radii as the selection pass computed them.
+        const Lanes sx = load<Lanes>(b.sx + m), sy = load<Lanes>(b.sy + m), sz = load<Lanes>(b.sz + m);
+        const Lanes ri = load<Lanes>(b.ri + m), rj = load<Lanes>(b.rj + m);
         const Lanes touching = ri + rj;
         const Lanes distance2 = sx * sx + sy * sy + sz * sz;
         const Lanes distance = laneSqrt(distance2);
@@ -707,6 +716,34 @@ struct PackLanesTable
 constexpr PackLanesTable kPackLanesTable;
 const __m128i* const kPackLanes = reinterpret_cast<const __m128i*>(kPackLanesTable.bytes);
 
+/// For each 4-bit mask of lanes, the vpermd indices that move the 64-bit lanes whose bit is set to
+/// the front, in lane order (the rest: lane 0, never read).
+struct PackDoublesTable
+{
+    alignas(32) std::int32_t index[16][8];
+    constexpr PackDoublesTable() : index{}
+    {
+        for (unsigned mask = 0; mask < 16; ++mask)
+        {
+            unsigned out = 0;
+            for (unsigned lane = 0; lane < 4; ++lane)
+                if (mask & (1u << lane))
+                {
+                    index[mask][2 * out] = static_cast<std::int32_t>(2 * lane);
+                    index[mask][2 * out + 1] = static_cast<std::int32_t>(2 * lane + 1);
+                    ++out;
+                }
+        }
+    }
+};
+constexpr PackDoublesTable kPackDoublesTable;
+
+/// The lanes of v selected by `pack` (a kPackDoublesTable row), stored from `out` on (32 bytes).
+VERIDEM_AVX2_TARGET VERIDEM_HOT_INLINE void storePacked(double* out, const Lanes4& v, const __m256i& pack)
+{
+    _mm256_storeu_pd(out, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), pack)));
+}
+
 /// selectTouchingScalar with the distance test of four candidates in AVX2 lanes (the same IEEE
 /// operations, so the same choices) and their bookkeeping four at a time: the touching ones packed
 /// by a byte shuffle, the opened ones (rare) from a bit mask, both in candidate order as there.
@@ -731,7 +768,8 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
         const Lanes3<Lanes4> xi = gatherVec3<Lanes4>(position, laneI),
                              xj = gatherVec3<Lanes4>(position, laneJ);
         const Lanes4 sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-        const Lanes4 touching = gather<Lanes4>(radius, laneI) + gather<Lanes4>(radius, laneJ);
+        const Lanes4 ri = gather<Lanes4>(radius, laneI), rj = gather<Lanes4>(radius, laneJ);
+        const Lanes4 touching = ri + rj;
         const Lanes4 distance2 = sx * sx + sy * sy + sz * sz;
         const unsigned touchingLanes = static_cast<unsigned>(
             _mm256_movemask_pd(reinterpret_cast<__m256d>(distance2 < touching * touching)));
@@ -746,6 +784,14 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
                          _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(laneI)), pack));
         _mm_storeu_si128(reinterpret_cast<__m128i*>(b.j + touchingEnd),
                          _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(laneJ)), pack));
+        // Their separations and radii, packed the same way (the kernel reads them, PairBatch).
+        const __m256i packDoubles =
+            _mm256_load_si256(reinterpret_cast<const __m256i*>(kPackDoublesTable.index[touchingLanes]));
+        storePacked(b.sx + touchingEnd, sx, packDoubles);
+        storePacked(b.sy + touchingEnd, sy, packDoubles);
+        storePacked(b.sz + touchingEnd, sz, packDoubles);
+        storePacked(b.ri + touchingEnd, ri, packDoubles);
+        storePacked(b.rj + touchingEnd, rj, packDoubles);
         touchingEnd += static_cast<std::size_t>(__builtin_popcount(touchingLanes));
         // Lanes that may have been in contact and do not touch now (rare): recorded in lane order.
         std::uint32_t mayBytes;
