@@ -324,8 +324,10 @@ int run(int argc, char** argv)
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
                     peak / 1e6, peak / static_cast<double>(n),
                     (peak - residentBefore) / static_cast<double>(n));
-        const double particleBytes = static_cast<double>(
-            n * (4 * sizeof(Vec3) + sizeof(Vec3) + 4 * sizeof(Real) + sizeof(std::uint32_t)));
+        const ParticleStore& store = world.particles;
+        const double particleBytes =
+            static_cast<double>(n * (3 * sizeof(store.position[0]) + 2 * sizeof(store.force[0]) +
+                                     4 * sizeof(Real) + sizeof(std::uint32_t)));
         std::printf(
             "  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",
             particleBytes / static_cast<double>(n),

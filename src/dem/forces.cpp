@@ -79,8 +79,8 @@ ExtraInputs extraInputsFor(const PairParams& params)
 /// anything, so GCC would otherwise reload every vector's pointer after it.
 struct PairSink
 {
-    NeighborList::Sum* force;           // per-particle sums [N]
-    NeighborList::Sum* torque;          // [N m]
+    PaddedVec3* force;                  // per-particle sums [N] (ParticleStore::force)
+    PaddedVec3* torque;                 // [N m]
     const std::uint32_t* deferredIndex; // per candidate, or NeighborList::kInBlock
     Vec3* deferredForce;                // on the second particle of a cross-block slot [N]
     Vec3* deferredTorque;               // [N m]
@@ -88,7 +88,7 @@ struct PairSink
     std::uint8_t* mayBeActive;          // per candidate
 
     explicit PairSink(World& world)
-        : force(world.neighbors.forceSum.data()), torque(world.neighbors.torqueSum.data()),
+        : force(world.particles.force.data()), torque(world.particles.torque.data()),
           deferredIndex(world.neighbors.activeDeferred.data()),
           deferredForce(world.neighbors.deferredForce.data()),
           deferredTorque(world.neighbors.deferredTorque.data()), spring(world.neighbors.activeSpring.data()),
@@ -96,13 +96,13 @@ struct PairSink
     {
     }
 
-    static void add(NeighborList::Sum& sum, const Vec3& v)
+    static void add(PaddedVec3& sum, const Vec3& v)
     {
         sum.x += v.x;
         sum.y += v.y;
         sum.z += v.z;
     }
-    static void subtract(NeighborList::Sum& sum, const Vec3& v)
+    static void subtract(PaddedVec3& sum, const Vec3& v)
     {
         sum.x -= v.x;
         sum.y -= v.y;
@@ -206,7 +206,7 @@ VERIDEM_HOT_INLINE void transpose(const Lanes2& x, const Lanes2& y, const Lanes2
     out[1] = Lanes4{x[1], y[1], z[1], 0.0};
 }
 
-/// sum[0..3] += v; sum[0..3] -= v (a padded NeighborList::Sum).
+/// sum[0..3] += v; sum[0..3] -= v (a PaddedVec3).
 VERIDEM_HOT_INLINE void addInto(double* sum, const Lanes4& v)
 {
     store(sum, load<Lanes4>(sum) + v);
@@ -918,8 +918,8 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
 {
     // (memset: glibc's picks the CPU's widest stores; std::fill of the 32-byte Sums compiled to
     // eight scalar stores a particle here, -fno-tree-slp-vectorize.)
-    std::memset(static_cast<void*>(sink.force + begin), 0, (end - begin) * sizeof(NeighborList::Sum));
-    std::memset(static_cast<void*>(sink.torque + begin), 0, (end - begin) * sizeof(NeighborList::Sum));
+    std::memset(static_cast<void*>(sink.force + begin), 0, (end - begin) * sizeof(PaddedVec3));
+    std::memset(static_cast<void*>(sink.torque + begin), 0, (end - begin) * sizeof(PaddedVec3));
     return end;
 }
 
@@ -1112,12 +1112,14 @@ bool selectLaneKernel(const std::string& name)
 namespace
 {
 
-/// addCrossBlockForces for a world with pair slots.
+/// addCrossBlockForces for a world with pair slots: adds each particle's incoming cross-block
+/// entries, in slot order, to the sums the pair stage left in its force and torque.
 void crossBlockSums(World& world, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
     const NeighborList& pairs = world.neighbors;
-    const bool hasIncoming = !pairs.deferredForce.empty();
+    if (pairs.deferredForce.empty())
+        return;
     const std::uint32_t* const start = pairs.incomingStart.data();
     const std::uint32_t* const entry = pairs.incomingEntry.data();
     const Vec3* const deferredForce = pairs.deferredForce.data();
@@ -1125,20 +1127,20 @@ void crossBlockSums(World& world, std::size_t begin, std::size_t end)
     // The entries are stored in slot order, so a particle's lie scattered: they are fetched
     // kEntriesAhead entries before their use.
     constexpr std::uint32_t kEntriesAhead = 16;
-    const std::uint32_t lastEntry = hasIncoming ? start[p.size()] - 1 : 0;
+    const std::uint32_t lastEntry = start[p.size()] - 1;
     for (std::size_t i = begin; i < end; ++i)
     {
-        const NeighborList::Sum &f = pairs.forceSum[i], &t = pairs.torqueSum[i];
-        Vec3 force{f.x, f.y, f.z}, torque{t.x, t.y, t.z};
-        if (hasIncoming)
-            for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
-            {
-                const std::uint32_t ahead = entry[std::min(e + kEntriesAhead, lastEntry)];
-                __builtin_prefetch(&deferredForce[ahead]);
-                __builtin_prefetch(&deferredTorque[ahead]);
-                force += deferredForce[entry[e]];
-                torque += deferredTorque[entry[e]];
-            }
+        if (start[i] == start[i + 1])
+            continue;
+        Vec3 force = p.force[i], torque = p.torque[i];
+        for (std::uint32_t e = start[i]; e < start[i + 1]; ++e)
+        {
+            const std::uint32_t ahead = entry[std::min(e + kEntriesAhead, lastEntry)];
+            __builtin_prefetch(&deferredForce[ahead]);
+            __builtin_prefetch(&deferredTorque[ahead]);
+            force += deferredForce[entry[e]];
+            torque += deferredTorque[entry[e]];
+        }
         p.force[i] = force;
         p.torque[i] = torque;
     }
@@ -1150,7 +1152,7 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
     const NeighborList& pairs = world.neighbors;
-    if (pairs.forceSum.size() != p.size()) // no list built (no particles)
+    if (pairs.incomingStart.size() != p.size() + 1) // no list built (no particles)
         return;
     if (pairs.size() == 0) // no pair slots (one ball on a turntable): the sums were not written
     {

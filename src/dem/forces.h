@@ -9,15 +9,15 @@
 namespace veridem::dem
 {
 
-/// Stage 3, pairs: sets every particle's pair sums (NeighborList::forceSum [N], torqueSum [N m])
+/// Stage 3, pairs: sets every particle's force [N] and torque [N m] (ParticleStore, padded rows)
 /// to the sum of its touching pair contacts inside its block (neighbor_list.h), in slot order, and leaves the
 /// cross-block shares in the slots' deferred entries; clears the history of slots that opened. dt [s] is the
 /// step the tangential spring increments over (0 for the initial evaluation). Resets and updates
 /// world.health.
 void computePairForces(World& world, Real dt);
 
-/// Stage 4a, particles [begin, end): force and torque = pair sums + the incoming cross-block
-/// contacts, in slot order (bit-identical for any thread count).
+/// Stage 4a, particles [begin, end): adds the incoming cross-block contacts to the force and
+/// torque stage 3 left, in slot order (bit-identical for any thread count).
 void addCrossBlockForces(World& world, std::size_t begin, std::size_t end);
 
 /// Stage 4b, particles [begin, end): adds each one's touching wall contacts, in slot order.

@@ -23,6 +23,20 @@ namespace
 
 using lanes::Lanes4;
 
+/// Rows 0, 1, 2 of four PaddedVec3 from a[i] (x, y, z, pad each) in the pattern of four Vec3:
+/// (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3).
+struct PaddedRows
+{
+    Lanes4 row[3];
+};
+VERIDEM_HOT_INLINE PaddedRows loadPaddedRows(const PaddedVec3* a, std::size_t i)
+{
+    const Lanes4 v0 = lanes::load<Lanes4>(&a[i].x), v1 = lanes::load<Lanes4>(&a[i + 1].x),
+                 v2 = lanes::load<Lanes4>(&a[i + 2].x), v3 = lanes::load<Lanes4>(&a[i + 3].x);
+    return {{__builtin_shufflevector(v0, v1, 0, 1, 2, 4), __builtin_shufflevector(v1, v2, 1, 2, 4, 5),
+             __builtin_shufflevector(v2, v3, 2, 4, 5, 6)}};
+}
+
 /// Row r (0, 1, 2) of the four Vec3 starting at a[i], unaligned.
 VERIDEM_HOT_INLINE Lanes4 loadRow(const Vec3* a, std::size_t i, int r)
 {
@@ -80,17 +94,18 @@ VERIDEM_HOT_INLINE Lanes4 fartherOf(const Lanes4& far, const Lanes4 (&x)[3], con
 }
 
 /// Row r of four particles' half kick from i: v + half (F/m + g) and w + (half / I) T, as the
-/// scalar loops compute them.
+/// scalar loops compute them (F and T: the four particles' rows, loadPaddedRows).
 struct KickedRows
 {
     Lanes4 velocity, angularVelocity;
 };
 VERIDEM_HOT_INLINE KickedRows halfKickRow(const IntegrationArrays& a, std::size_t i, int r, Real half,
                                           const Spread& inverseMass, const Spread& halfInverseInertia,
-                                          const GravityRows& g)
+                                          const GravityRows& g, const PaddedRows& force,
+                                          const PaddedRows& torque)
 {
-    return {loadRow(a.velocity, i, r) + half * (loadRow(a.force, i, r) * inverseMass.row[r] + g.row[r]),
-            loadRow(a.angularVelocity, i, r) + halfInverseInertia.row[r] * loadRow(a.torque, i, r)};
+    return {loadRow(a.velocity, i, r) + half * (force.row[r] * inverseMass.row[r] + g.row[r]),
+            loadRow(a.angularVelocity, i, r) + halfInverseInertia.row[r] * torque.row[r]};
 }
 
 /// std::max over the lanes, from `m` (lane order does not matter: no NaN is ever taken).
@@ -116,11 +131,13 @@ VERIDEM_AVX2_TARGET Motion kickDriftLanes(ParticleStore& p, const Vec3& gravity,
     {
         const Spread inverseMass(lanes::load<Lanes4>(a.invMass + i));
         const Spread halfInverseInertia(half * lanes::load<Lanes4>(a.invInertia + i));
+        const PaddedRows force = loadPaddedRows(a.force, i), torque = loadPaddedRows(a.torque, i);
         Lanes4 x[3];
         for (int r = 0; r < 3; ++r)
         {
             // v += half (F/m + g); w += (half / I) T; x += dt v, as kickDriftRange.
-            const KickedRows kicked = halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g);
+            const KickedRows kicked =
+                halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g, force, torque);
             storeRow(a.velocity, i, r, kicked.velocity);
             storeRow(a.angularVelocity, i, r, kicked.angularVelocity);
             x[r] = loadRow(a.position, i, r) + dt * kicked.velocity;
@@ -150,9 +167,11 @@ VERIDEM_AVX2_TARGET bool kickLanes(ParticleStore& p, const Vec3& gravity, Real d
     {
         const Spread inverseMass(lanes::load<Lanes4>(a.invMass + i));
         const Spread halfInverseInertia(half * lanes::load<Lanes4>(a.invInertia + i));
+        const PaddedRows force = loadPaddedRows(a.force, i), torque = loadPaddedRows(a.torque, i);
         for (int r = 0; r < 3; ++r)
         {
-            const KickedRows kicked = halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g);
+            const KickedRows kicked =
+                halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g, force, torque);
             storeRow(a.velocity, i, r, kicked.velocity);
             storeRow(a.angularVelocity, i, r, kicked.angularVelocity);
             probe = probe +

@@ -26,13 +26,13 @@ struct Motion
 /// them from the vectors after every store through one of them).
 struct IntegrationArrays
 {
-    Vec3* position;         // [m]
-    Vec3* velocity;         // [m/s]
-    Vec3* angularVelocity;  // [rad/s]
-    const Vec3* force;      // [N]
-    const Vec3* torque;     // [N m]
-    const Real* invMass;    // [1/kg]
-    const Real* invInertia; // [1/(kg m^2)]
+    Vec3* position;           // [m]
+    Vec3* velocity;           // [m/s]
+    Vec3* angularVelocity;    // [rad/s]
+    const PaddedVec3* force;  // [N]
+    const PaddedVec3* torque; // [N m]
+    const Real* invMass;      // [1/kg]
+    const Real* invInertia;   // [1/(kg m^2)]
 
     explicit IntegrationArrays(ParticleStore& p)
         : position(p.position.data()), velocity(p.velocity.data()), angularVelocity(p.angularVelocity.data()),

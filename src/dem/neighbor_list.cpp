@@ -219,9 +219,8 @@ std::size_t NeighborList::memoryBytes() const
     return bytes(first) + bytes(second) + bytes(activeSpring) + bytes(activeRolling) +
            bytes(activeMayBeActive) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
            bytes(source_) + bytes(within_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferredForce) +
-           bytes(deferredTorque) + bytes(incomingStart) + bytes(incomingEntry) + bytes(forceSum) +
-           bytes(torqueSum) + bytes(activeSlots) + bytes(activeFirst) + bytes(activeSecond) +
-           bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
+           bytes(deferredTorque) + bytes(incomingStart) + bytes(incomingEntry) + bytes(activeSlots) +
+           bytes(activeFirst) + bytes(activeSecond) + bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -240,8 +239,6 @@ void NeighborList::rebuild(const ParticleStore& particles)
     positionAtBuild_.assign(particles.position.begin(), particles.position.end());
     firstStart.assign(n + 1, 0);
     incomingStart.assign(n + 1, 0);
-    forceSum.assign(n, Sum{});
-    torqueSum.assign(n, Sum{});
     if (n == 0)
     {
         first.clear();

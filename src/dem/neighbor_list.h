@@ -44,15 +44,6 @@ class NeighborList
     std::vector<std::uint32_t> first;  // i of each pair (sorted, i < j)
     std::vector<std::uint32_t> second; // j of each pair
 
-    // Per-particle sums of the pair loop, force [N] and torque [N m], padded to four doubles so
-    // that one vector instruction adds a contact (x, y, z, 0). The particle pass (world.cpp) turns
-    // them into ParticleStore::force/torque.
-    struct alignas(32) Sum
-    {
-        double x, y, z, pad;
-    };
-    std::vector<Sum> forceSum, torqueSum;
-
     // Blocks: particles [b * kBlockParticles, (b + 1) * kBlockParticles) form block b.
     static constexpr std::uint32_t kBlockParticles = 1024;
     std::vector<std::uint32_t> firstStart; // slots [firstStart[p], firstStart[p+1]) have first == p

@@ -12,17 +12,36 @@
 namespace veridem::dem
 {
 
+/// A Vec3 padded to 32 bytes (x, y, z, pad), so that one four-lane instruction adds a contact's
+/// force or torque into a particle's sum (forces.cpp). Reads and writes as a Vec3; pad stays 0.
+struct alignas(32) PaddedVec3 : Vec3
+{
+    Real pad = 0;
+
+    constexpr PaddedVec3() = default;
+    constexpr PaddedVec3(const Vec3& v) : Vec3(v) {}
+    constexpr PaddedVec3& operator=(const Vec3& v)
+    {
+        Vec3::operator=(v);
+        return *this;
+    }
+};
+static_assert(sizeof(PaddedVec3) == 32);
+
 struct ParticleStore
 {
     std::vector<Vec3> position;        // x [m]
     std::vector<Vec3> velocity;        // v [m/s]
     std::vector<Vec3> angularVelocity; // w [rad/s]
-    std::vector<Vec3> force;           // contact force of the current step [N] (gravity excluded)
-    std::vector<Vec3> torque;          // contact torque of the current step [N m]
-    std::vector<Real> radius;          // [m]
-    std::vector<Real> mass;            // [kg]
-    std::vector<Real> invMass;         // [1/kg]
-    std::vector<Real> invInertia;      // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
+    // Contact force [N] (gravity excluded) and torque [N m] of the current step. The pair stage
+    // adds each contact into them directly (padded rows), so they hold partial sums while a step
+    // runs and the step's totals between steps.
+    std::vector<PaddedVec3> force;
+    std::vector<PaddedVec3> torque;
+    std::vector<Real> radius;     // [m]
+    std::vector<Real> mass;       // [kg]
+    std::vector<Real> invMass;    // [1/kg]
+    std::vector<Real> invInertia; // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
     std::vector<std::uint32_t> material;
 
     std::size_t size() const { return position.size(); }
@@ -46,8 +65,10 @@ struct ParticleStore
 
     void reserve(std::size_t n)
     {
-        for (auto* a : {&position, &velocity, &angularVelocity, &force, &torque})
+        for (auto* a : {&position, &velocity, &angularVelocity})
             a->reserve(n);
+        force.reserve(n);
+        torque.reserve(n);
         for (auto* a : {&radius, &mass, &invMass, &invInertia})
             a->reserve(n);
         material.reserve(n);

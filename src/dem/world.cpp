@@ -93,7 +93,7 @@ bool contactListsNeedRebuild(World& world, const Motion& moved)
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin);
 }
 
-/// Particles per sub-pass of stage 4: their pair sums, forces, velocities and wall contacts
+/// Particles per sub-pass of stage 4: their forces, torques, velocities and wall contacts
 /// (~200 B a particle) stay in L1/L2 between the three sub-passes (a whole chunk's do not).
 constexpr std::size_t kFinishBlock = 512;
 

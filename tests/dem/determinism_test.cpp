@@ -80,9 +80,9 @@ World runOn(int threads, int steps, int side = 13)
     return world;
 }
 
-bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
+template <class V> bool sameBits(const std::vector<V>& a, const std::vector<V>& b)
 {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(V)) == 0;
 }
 
 TEST(Determinism, OneAndTwoThreadsGiveTheSameBitsAfter1000Steps)
