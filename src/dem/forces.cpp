@@ -691,12 +691,13 @@ void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const PairPar
     lawLanes<Lanes2>(b, count, dt, uniform);
 }
 
-/// For each 4-bit mask of lanes, the byte shuffle that moves the 32-bit lanes whose bit is set to
-/// the front, in lane order (the rest zeroed).
-struct PackLanesTable
+/// For each 4-bit mask of lanes, the shuffle indices that move the lanes whose bit is set to the
+/// front, in lane order: each lane is kParts consecutive elements of the shuffle, and the
+/// elements after the moved lanes are kRest.
+template <class T, unsigned kParts, T kRest> struct PackTable
 {
-    alignas(16) std::uint8_t bytes[16][16];
-    constexpr PackLanesTable() : bytes{}
+    alignas(32) T index[16][4 * kParts];
+    constexpr PackTable() : index{}
     {
         for (unsigned mask = 0; mask < 16; ++mask)
         {
@@ -704,39 +705,20 @@ struct PackLanesTable
             for (unsigned lane = 0; lane < 4; ++lane)
                 if (mask & (1u << lane))
                 {
-                    for (unsigned byte = 0; byte < 4; ++byte)
-                        bytes[mask][4 * out + byte] = static_cast<std::uint8_t>(4 * lane + byte);
+                    for (unsigned part = 0; part < kParts; ++part)
+                        index[mask][kParts * out + part] = static_cast<T>(kParts * lane + part);
                     ++out;
                 }
-            for (unsigned byte = 4 * out; byte < 16; ++byte)
-                bytes[mask][byte] = 0x80; // (pshufb: zero)
+            for (unsigned e = kParts * out; e < 4 * kParts; ++e)
+                index[mask][e] = kRest;
         }
     }
 };
-constexpr PackLanesTable kPackLanesTable;
-const __m128i* const kPackLanes = reinterpret_cast<const __m128i*>(kPackLanesTable.bytes);
-
-/// For each 4-bit mask of lanes, the vpermd indices that move the 64-bit lanes whose bit is set to
-/// the front, in lane order (the rest: lane 0, never read).
-struct PackDoublesTable
-{
-    alignas(32) std::int32_t index[16][8];
-    constexpr PackDoublesTable() : index{}
-    {
-        for (unsigned mask = 0; mask < 16; ++mask)
-        {
-            unsigned out = 0;
-            for (unsigned lane = 0; lane < 4; ++lane)
-                if (mask & (1u << lane))
-                {
-                    index[mask][2 * out] = static_cast<std::int32_t>(2 * lane);
-                    index[mask][2 * out + 1] = static_cast<std::int32_t>(2 * lane + 1);
-                    ++out;
-                }
-        }
-    }
-};
-constexpr PackDoublesTable kPackDoublesTable;
+/// 32-bit lanes moved by a byte shuffle (pshufb; 0x80 zeroes the rest).
+constexpr PackTable<std::uint8_t, 4, 0x80> kPackLanesTable;
+const __m128i* const kPackLanes = reinterpret_cast<const __m128i*>(kPackLanesTable.index);
+/// 64-bit lanes moved as pairs of 32-bit halves (vpermd; the rest take lane 0, never read).
+constexpr PackTable<std::int32_t, 2, 0> kPackDoublesTable;
 
 /// The lanes of v selected by `pack` (a kPackDoublesTable row), stored from `out` on (32 bytes).
 VERIDEM_AVX2_TARGET VERIDEM_HOT_INLINE void storePacked(double* out, const Lanes4& v, const __m256i& pack)
