@@ -1,7 +1,8 @@
 // The integration loops in four AVX2 lanes (integrate.h: kickDriftRange, kickRange).
 //
 // The particle arrays hold Vec3 rows (x, y, z, 24 bytes), so four particles are twelve doubles:
-// three 32-byte vectors per array, "rows" r = 0, 1, 2 below. The updates are component-wise,
+// three 32-byte vectors per array, "rows" r = 0, 1, 2 below. Force and torque are padded rows
+// (PaddedVec3, 32 bytes), brought to the same pattern by three shuffles (loadPaddedRows). The updates are component-wise,
 // so they run on the rows as they are, with the per-particle factors (1/m, dt/2 / I) spread to
 // the row pattern (m0 m0 m0 m1 | m1 m1 m2 m2 | m2 m3 m3 m3) and gravity to (gx gy gz gx | ...).
 // Only the motion check, a sum over a particle's three components, transposes its squares to one
