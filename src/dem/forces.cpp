@@ -376,6 +376,26 @@ template <class Lanes> struct LaneConstants
 
 /// What the contact law gives in lanes: signed normal force [N], tangential force [N], updated
 /// tangential spring [m].
+/// projectSpringToTangentPlane in lanes (the same operations): the spring h [m] rotated into the
+/// plane normal to n, its length kept, into p.
+template <class Lanes>
+VERIDEM_HOT_INLINE void projectSpringLanes(Lanes nx, Lanes ny, Lanes nz, Lanes hx, Lanes hy, Lanes hz,
+                                           Lanes& px, Lanes& py, Lanes& pz)
+{
+    using LaneMask = decltype(Lanes{} < Lanes{});
+    const Lanes zero = {};
+    const Lanes oldLength2 = hx * hx + hy * hy + hz * hz;
+    const Lanes along = hx * nx + hy * ny + hz * nz;
+    const Lanes qx = hx - along * nx, qy = hy - along * ny, qz = hz - along * nz;
+    const Lanes newLength2 = qx * qx + qy * qy + qz * qz;
+    const Lanes lengthRatio = oldLength2 / newLength2;
+    const Lanes rescale = laneSqrt(lengthRatio);
+    const LaneMask keep = oldLength2 == zero, vanish = newLength2 == zero;
+    px = keep ? hx : (vanish ? zero : qx * rescale);
+    py = keep ? hy : (vanish ? zero : qy * rescale);
+    pz = keep ? hz : (vanish ? zero : qz * rescale);
+}
+
 template <class Lanes> struct LaneLaw
 {
     Lanes normalForce, ftx, fty, ftz, springX, springY, springZ;
@@ -385,7 +405,8 @@ template <class Lanes> struct LaneLaw
 /// without rolling resistance) for the lanes m .. m + width of a batch, with the IEEE operations
 /// of the scalar law in the same order. Inputs as ContactInput: unit normal n, overlap [m],
 /// relative contact velocity rv [m/s], effective mass [kg], stored spring h [m]; dt [s].
-template <class Lanes>
+/// kProjected: h is already rotated into the tangent plane (projectSpringLanes, by the caller).
+template <class Lanes, bool kProjected>
 VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, const LaneParams& law,
                                                  std::size_t m, Real dt, Lanes nx, Lanes ny, Lanes nz,
                                                  Lanes overlap, Lanes rvx, Lanes rvy, Lanes rvz,
@@ -425,16 +446,9 @@ VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, 
 
     // 2. coulombSpringForce().
     const Lanes vtx = rvx - normalSpeed * nx, vty = rvy - normalSpeed * ny, vtz = rvz - normalSpeed * nz;
-    const Lanes oldLength2 = hx * hx + hy * hy + hz * hz;
-    const Lanes along = hx * nx + hy * ny + hz * nz;
-    const Lanes qx = hx - along * nx, qy = hy - along * ny, qz = hz - along * nz;
-    const Lanes newLength2 = qx * qx + qy * qy + qz * qz;
-    const Lanes lengthRatio = oldLength2 / newLength2;
-    const Lanes rescale = laneSqrt(lengthRatio);
-    const LaneMask keep = oldLength2 == zero, vanish = newLength2 == zero;
-    const Lanes px = keep ? hx : (vanish ? zero : qx * rescale);
-    const Lanes py = keep ? hy : (vanish ? zero : qy * rescale);
-    const Lanes pz = keep ? hz : (vanish ? zero : qz * rescale);
+    Lanes px = hx, py = hy, pz = hz; // kProjected: the caller rotated h into the plane already
+    if constexpr (!kProjected)
+        projectSpringLanes(nx, ny, nz, hx, hy, hz, px, py, pz);
     const Lanes springX = px + vtx * dt, springY = py + vty * dt, springZ = pz + vtz * dt;
     const Lanes trialX = -kt * springX - etaT * vtx, trialY = -kt * springY - etaT * vty,
                 trialZ = -kt * springZ - etaT * vtz;
@@ -472,8 +486,9 @@ struct LawBatch
 };
 
 /// The contact law of the contacts [0, count) of `b` in lanes (the same law and bits as
-/// evaluateContact; a wall is a partner of infinite mass, so m* = m).
-template <class Lanes>
+/// evaluateContact; a wall is a partner of infinite mass, so m* = m). kProjected: b's springs are
+/// already in the tangent plane (the pair kernel's input pass rotates them).
+template <class Lanes, bool kProjected>
 VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
 {
     constexpr std::size_t kLanes = kWidth<Lanes>;
@@ -489,11 +504,11 @@ VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const 
     const LaneConstants<Lanes> constants(uniform);
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
-        const LaneLaw<Lanes> out =
-            linearLawLanes<Lanes>(constants, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m),
-                                  load<Lanes>(b.nz + m), load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m),
-                                  load<Lanes>(b.rvy + m), load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m),
-                                  load<Lanes>(b.hx + m), load<Lanes>(b.hy + m), load<Lanes>(b.hz + m));
+        const LaneLaw<Lanes> out = linearLawLanes<Lanes, kProjected>(
+            constants, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m), load<Lanes>(b.nz + m),
+            load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m), load<Lanes>(b.rvy + m),
+            load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m), load<Lanes>(b.hx + m), load<Lanes>(b.hy + m),
+            load<Lanes>(b.hz + m));
         store(b.normalForce + m, out.normalForce);
         store(b.ftx + m, out.ftx);
         store(b.fty + m, out.fty);
@@ -615,16 +630,21 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         store(law.rvy + m, dvy - (az * nx - ax * nz));
         store(law.rvz + m, dvz - (ax * ny - ay * nx));
         store(law.mass + m, gather<Lanes>(candidateMass, laneK)); // m_i m_j / (m_i + m_j)
-        store(law.hx + m, h.x);
-        store(law.hy + m, h.y);
-        store(law.hz + m, h.z);
+        // The spring rotated into the tangent plane here rather than in the law pass (its
+        // division and square root): the divider work of the two passes is then about even
+        // (two square roots and two divisions here, one division there, per group).
+        Lanes px, py, pz;
+        projectSpringLanes(nx, ny, nz, h.x, h.y, h.z, px, py, pz);
+        store(law.hx + m, px);
+        store(law.hy + m, py);
+        store(law.hz + m, pz);
         store(leverIs + m, leverI);
         store(leverJs + m, leverJ);
         store(minRadii + m, rj < ri ? rj : ri);
     }
 
     // 2. The law (lawLanes, as the wall contacts').
-    lawLanes<Lanes>(law, padded, dt, uniform);
+    lawLanes<Lanes, true>(law, padded, dt, uniform);
 
     // 3. Forces and torques, scattered in lane (= slot) order; the health record.
     for (std::size_t m = 0; m < padded; m += kLanes)
@@ -683,12 +703,12 @@ void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std
 
 VERIDEM_AVX2_TARGET void wallContactsAvx2(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
 {
-    lawLanes<Lanes4>(b, count, dt, uniform);
+    lawLanes<Lanes4, false>(b, count, dt, uniform);
 }
 
 void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
 {
-    lawLanes<Lanes2>(b, count, dt, uniform);
+    lawLanes<Lanes2, false>(b, count, dt, uniform);
 }
 
 /// For each 4-bit mask of lanes, the shuffle indices that move the lanes whose bit is set to the
