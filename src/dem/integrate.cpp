@@ -2,14 +2,14 @@
 //
 // The particle arrays hold Vec3 rows (x, y, z, 24 bytes), so four particles are twelve doubles:
 // three 32-byte vectors per array, "rows" r = 0, 1, 2 below. Force and torque are padded rows
-// (PaddedVec3, 32 bytes), brought to the same pattern by three shuffles (loadPaddedRows). The updates are component-wise,
-// so they run on the rows as they are, with the per-particle factors (1/m, dt/2 / I) spread to
-// the row pattern (m0 m0 m0 m1 | m1 m1 m2 m2 | m2 m3 m3 m3) and gravity to (gx gy gz gx | ...).
-// Only the motion check, a sum over a particle's three components, transposes its squares to one
-// lane per particle. Each lane performs the scalar loop's IEEE operations in the same order (no
-// fused multiply-add, -ffp-contract=off), so the bits are the scalar loop's
-// (tests/dem/determinism_test.cpp). The scalar loops, one op per component, issue about three
-// times the instructions: the two passes over the particles were ~18 % of a bed step's.
+// (PaddedVec3, 32 bytes), brought to the same pattern by three shuffles (loadPaddedRows). The
+// updates are component-wise, so they run on the rows as they are, with the per-particle factors
+// (1/m, dt/2 / I) spread to the row pattern (m0 m0 m0 m1 | m1 m1 m2 m2 | m2 m3 m3 m3) and gravity
+// to (gx gy gz gx | ...). Only the motion check, a sum over a particle's three components,
+// transposes its squares to one lane per particle. Each lane performs the scalar loop's IEEE
+// operations in the same order (no fused multiply-add, -ffp-contract=off), so the bits are the
+// scalar loop's (tests/dem/determinism_test.cpp). The scalar loops, one op per component, issue
+// about three times the instructions: the two passes over the particles were ~18 % of a bed step's.
 #include "dem/integrate.h"
 
 #include "dem/lanes.h"
