@@ -1100,6 +1100,11 @@ const char* laneKernelName()
     return currentVariant()->name;
 }
 
+bool laneKernelIsAvx2()
+{
+    return currentVariant() == &kVariants[0];
+}
+
 bool selectLaneKernel(const std::string& name)
 {
     for (const KernelVariant& v : kVariants)
@@ -1323,8 +1328,11 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     return health;
 }
 
-ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
-                             Vec3& torque)
+namespace
+{
+/// wallContactsOf's body, inlined into each instruction-set variant below.
+VERIDEM_HOT_INLINE ContactHealth wallContactsOfBody(World& world, Real dt, std::uint32_t i,
+                                                    const ParticleState& s, Vec3& force, Vec3& torque)
 {
     const WallContactList& list = world.wallContacts;
     ContactHealth health{0, 0, false, 0};
@@ -1333,6 +1341,19 @@ ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const Parti
     for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k)
         wallContactScalar(world, dt, k, i, s, force, torque, health);
     return health;
+}
+} // namespace
+
+ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
+                             Vec3& torque)
+{
+    return wallContactsOfBody(world, dt, i, s, force, torque);
+}
+
+VERIDEM_AVX2_TARGET ContactHealth wallContactsOfAvx2(World& world, Real dt, std::uint32_t i,
+                                                     const ParticleState& s, Vec3& force, Vec3& torque)
+{
+    return wallContactsOfBody(world, dt, i, s, force, torque);
 }
 
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks)

@@ -29,6 +29,10 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
 /// operations of computeWallForces. Returns their health.
 ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
                              Vec3& torque);
+/// wallContactsOf compiled for x86-64-v3 (AVX2; no fused multiply-add, so the same bits): for the
+/// one-particle step's AVX2 variant. Only on a CPU with AVX2 (laneKernelIsAvx2()).
+ContactHealth wallContactsOfAvx2(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
+                                 Vec3& torque);
 
 /// Folds per-chunk wall health into world health in chunk order (sets touchingWalls).
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks);
@@ -37,6 +41,8 @@ void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks)
 /// "portable" (2 lanes, SSE2). The widest this CPU runs, unless the environment variable
 /// VERIDEM_KERNEL names another. All variants give the same bits.
 const char* laneKernelName();
+/// laneKernelName() is "avx2" (a pointer comparison: cheap enough to ask every step).
+bool laneKernelIsAvx2();
 /// Selects a variant by name (tests, benchmarks); false if unknown or this CPU cannot run it.
 bool selectLaneKernel(const std::string& name);
 

@@ -16,12 +16,13 @@
 // increment vt dt is then exactly the relative displacement over [t, t+dt]. Output never happens
 // here; the driver records the world between steps.
 //
-// A world of one particle takes stepOneParticle: these stages, the ball's state kept in registers.
+// A world of one particle takes stepOneParticleBody: these stages, the ball's state kept in registers.
 #include "dem/world.h"
 
 #include "core/error.h"
 #include "dem/forces.h"
 #include "dem/integrate.h"
+#include "dem/lanes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -81,7 +82,7 @@ class StageClock
     std::chrono::steady_clock::time_point last_;
 };
 
-bool contactListsNeedRebuild(World& world, const Motion& moved)
+VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& moved)
 {
     return world.neighbors.checkMotion(world.particles.size(), moved.sinceBuild2, moved.sinceActiveBuild2) ||
            world.wallContacts.needsRebuild(world.walls, world.neighbors.skin);
@@ -178,8 +179,10 @@ bool integrationInLanes(const World& world)
 /// same order with the same operations, so the same bits, but the particle's state stays in
 /// registers from the kick-drift to the kick instead of being stored by one stage and loaded by
 /// the next (docs/performance.md, session 11: ~1.4x the steps per second). A single particle has no pair
-/// slots, so stage 3 only resets the pair health.
-void stepOneParticle(World& world, Real dt)
+/// slots, so stage 3 only resets the pair health. `wallContacts`: wallContactsOf or its AVX2
+/// variant (inlined into stepOneParticlePortable and stepOneParticleAvx2, one caller each).
+template <class WallContacts>
+VERIDEM_HOT_INLINE void stepOneParticleBody(World& world, Real dt, WallContacts wallContacts)
 {
     ParticleStore& p = world.particles;
     ParticleState s = particleState(p, 0);
@@ -201,7 +204,7 @@ void stepOneParticle(World& world, Real dt)
     world.health.touchingPairs = 0;   // resets the pair health (one particle has no pairs)
 
     Vec3 force{}, torque{}; // the pair sums are zero (addCrossBlockForces)
-    const ContactHealth walls = wallContactsOf(world, dt, 0, s, force, torque);
+    const ContactHealth walls = wallContacts(world, dt, 0, s, force, torque);
     p.force[0] = force;
     p.torque[0] = torque;
     mergeWallHealth(world.health, &walls, 1);
@@ -211,6 +214,19 @@ void stepOneParticle(World& world, Real dt)
     p.angularVelocity[0] = s.angularVelocity;
     if (!world.health.finite)
         recordFirstNonFinite(p, world.health);
+}
+
+void stepOneParticlePortable(World& world, Real dt)
+{
+    stepOneParticleBody(world, dt, wallContactsOf);
+}
+
+/// The one-particle step compiled for x86-64-v3: GCC's three-operand AVX encodings of the same
+/// scalar operations (no fused multiply-add: -ffp-contract=off), so the same bits in ~13 % fewer
+/// instructions (callgrind, one ball on a turntable; docs/performance.md, session 13).
+VERIDEM_AVX2_TARGET void stepOneParticleAvx2(World& world, Real dt)
+{
+    stepOneParticleBody(world, dt, wallContactsOfAvx2);
 }
 
 } // namespace
@@ -249,7 +265,12 @@ void step(World& world, Real dt)
 
     if (world.particles.size() == 1 && !world.profile.enabled)
     {
-        stepOneParticle(world, dt); // the stages below for one particle, its state in registers
+        // The stages below for one particle, its state in registers; in AVX2 encodings when the
+        // lane kernel is (the same bits either way; VERIDEM_KERNEL=portable selects the other).
+        if (laneKernelIsAvx2())
+            stepOneParticleAvx2(world, dt);
+        else
+            stepOneParticlePortable(world, dt);
         world.time += dt;
         ++world.stepCount;
         return;

@@ -3,6 +3,7 @@
 // same ball with a distant twin added (two particles take the general path; the twin never comes
 // near the ball or a wall, so it adds nothing to the ball's sums), and the ball's state, forces,
 // contact history and health are compared bit for bit after thousands of steps.
+#include "dem/forces.h"
 #include "dem/world.h"
 
 #include <gtest/gtest.h>
@@ -45,7 +46,8 @@ World build(const Scene& scene, bool withTwin)
 /// Runs the scene alone and with the twin; expects the ball's bits to agree at every checkpoint,
 /// and the ball to have touched the wall in at least `minTouchingSteps` steps (so that the
 /// contact law, not only free flight, was compared).
-void expectSameBits(const Scene& scene, int steps, Real dt, int minTouchingSteps, const std::string& what)
+void expectSameBitsWithKernel(const Scene& scene, int steps, Real dt, int minTouchingSteps,
+                              const std::string& what)
 {
     World alone = build(scene, false), paired = build(scene, true);
     int touchingSteps = 0;
@@ -74,6 +76,17 @@ void expectSameBits(const Scene& scene, int steps, Real dt, int minTouchingSteps
     EXPECT_GE(touchingSteps, minTouchingSteps) << what;
     EXPECT_EQ(alone.stepCount, paired.stepCount);
     EXPECT_EQ(alone.time, paired.time);
+}
+
+/// expectSameBitsWithKernel for each instruction-set variant this CPU runs: the one-particle step
+/// is compiled in two (world.cpp: portable, and AVX2 encodings when the lane kernel is "avx2").
+void expectSameBits(const Scene& scene, int steps, Real dt, int minTouchingSteps, const std::string& what)
+{
+    const std::string initial = laneKernelName();
+    for (const char* variant : {"avx2", "portable"})
+        if (selectLaneKernel(variant)) // (false: this CPU cannot run it)
+            expectSameBitsWithKernel(scene, steps, dt, minTouchingSteps, what + ", " + variant + " variant");
+    ASSERT_TRUE(selectLaneKernel(initial));
 }
 
 Material steel()
