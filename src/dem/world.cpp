@@ -193,10 +193,12 @@ VERIDEM_HOT_INLINE void stepOneParticleBody(World& world, Real dt, WallContacts 
     p.position[0] = s.position;
     p.velocity[0] = s.velocity;
     p.angularVelocity[0] = s.angularVelocity;
-    Motion moved; // (as kickDriftRange measures it)
+    // The motion since the full build, as kickDriftRange measures it. Not the motion since the
+    // candidate sub-list was built: one particle has no pair slots, so that sub-list is empty and
+    // left as it is (a rebuild, which a second particle would force, marks it stale anyway).
+    Motion moved;
     if (const NeighborList::MotionReference reference = world.neighbors.motionReference(1); reference.built)
-        moved = {std::max(Real{0}, lengthSquared(s.position - reference.built[0])),
-                 std::max(Real{0}, lengthSquared(s.position - reference.activeBuilt[0]))};
+        moved.sinceBuild2 = std::max(Real{0}, lengthSquared(s.position - reference.built[0]));
     moveWalls(world.walls, dt);
     if (contactListsNeedRebuild(world, moved)) [[unlikely]]
         rebuildContactLists(world);
