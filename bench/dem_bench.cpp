@@ -13,7 +13,9 @@
 //
 // The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
-// stage and the kinetic energy at the end. Nothing is written during the timed loop.
+// stage and the kinetic energy at the end. Nothing is written during the timed loop. A 12 ms probe
+// before and after it (core_probe.h) shows whether the run had a whole CPU core.
+#include "core_probe.h"
 #include "dem/forces.h"
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
@@ -250,6 +252,7 @@ int run(int argc, char** argv)
             std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
         world.profile.enabled = o.profile;
 
+        const bench::CoreProbe probeBefore = bench::probeCore();
         const double cpuStart = cpuSeconds();
         const auto start = std::chrono::steady_clock::now();
         // The fastest window of kWindow steps as well: on a shared machine the whole-run rate
@@ -292,6 +295,7 @@ int run(int argc, char** argv)
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double cpu = cpuSeconds() - cpuStart;
+        const bench::CoreProbe probeAfter = bench::probeCore();
         const double rate = static_cast<double>(n) * static_cast<double>(o.steps) / seconds;
 
         const double peak = peakResidentBytes();
@@ -321,6 +325,13 @@ int run(int argc, char** argv)
         // steadier measure than wall time (with T threads, compare cpu / T with the wall time).
         std::printf("  cpu time %.3f s = %.2f cores busy  %.4g particle-steps per cpu-second\n", cpu,
                     cpu / seconds, static_cast<double>(n) * static_cast<double>(o.steps) / cpu);
+        // Whether the run had a whole core (bench/core_probe.h): on a shared machine another
+        // tenant's hardware thread on the same core slows a run by up to ~1.5x at the same clock.
+        if (probeBefore.addsPerCycle > 0)
+            std::printf("  core probe (main thread): before %.2f GHz, %.2f adds/cycle; after %.2f GHz, %.2f "
+                        "adds/cycle (~3.7: a whole Zen 3 core)\n",
+                        probeBefore.clockGHz, probeBefore.addsPerCycle, probeAfter.clockGHz,
+                        probeAfter.addsPerCycle);
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
                     peak / 1e6, peak / static_cast<double>(n),
                     (peak - residentBefore) / static_cast<double>(n));
