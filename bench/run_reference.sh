@@ -15,6 +15,10 @@
 # minutes, the spread of these ratios is the honest uncertainty of "veridem / LAMMPS". LAMMPS runs
 # in 100-step runs here, so each round also prints the ratio of the two codes' best 100-step
 # windows: what each code does in the quietest moments of the run (on a dedicated machine).
+# Every veridem run prints a core probe before and after its timed loop (bench/core_probe.h: the
+# integer adds per cycle this thread gets, ~3.7 on a whole Zen 3 core, 2.2-2.8 when another
+# tenant's hardware thread shares it); `veridem_bench --core-probe` is run around each LAMMPS and
+# LIGGGHTS run as well, so that each figure says which state of the machine it was measured in.
 # OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
 # default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
 # every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
@@ -45,11 +49,12 @@ if [ -n "${VERIDEM_ROUNDS:-}" ]; then
     "$1" --steps "$steps" --threads "$2" --file "$shared/settled_bed_20k.xyz" |
       awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}'
   }
-  veridem_rates() { # bench binary, threads -> "whole-run best-window" particle-steps/s
+  veridem_rates() { # bench binary, threads -> "whole-run best-window probe-before probe-after"
     "$1" --steps "$steps" --threads "$2" --file "$shared/settled_bed_20k.xyz" |
       awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") w = $i}
-           /best window/ {b = $6} END {print w, b}'
+           /best window/ {b = $6} /core probe/ {p = $8; q = $13} END {print w, b, p, q}'
   }
+  probe() { "$bench" --core-probe | awk '{print $5}'; } # adds per cycle now
   lammps_rates() { # LAMMPS log of 100-step runs -> "whole-run best-window" particle-steps/s
     awk '/^Loop time of/ {t += $4; s += $9; if ($12 * $9 / $4 > b) b = $12 * $9 / $4; a = $12}
          END {printf "%.4g %.4g\n", a * s / t, b}' "$1"
@@ -58,15 +63,18 @@ if [ -n "${VERIDEM_ROUNDS:-}" ]; then
   for r in $(seq "$VERIDEM_ROUNDS"); do
     for n in 1 2; do
       set -- $(veridem_rates "$bench" "$n")
-      v=$1 vb=$2
+      v=$1 vb=$2 vp="$3/$4"
+      lp=$(probe)
       # LAMMPS in runs of 100 steps (the same trajectory: `run pre no`), so that it too has a
       # best 100-step window, the rate of a quiet moment of this shared machine.
       mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/bed.data" \
         -var steps "$steps" -var window 100 -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
+      lp="$lp/$(probe)"
       set -- $(lammps_rates "$work/lammps.log")
       l=$1 lb=$2
       echo "round $r, bed, $n thread(s)/rank(s): veridem $v  LAMMPS $l  ratio $(ratio "$v" "$l");" \
-        "best 100-step windows: veridem $vb  LAMMPS $lb  ratio $(ratio "$vb" "$lb")"
+        "best 100-step windows: veridem $vb  LAMMPS $lb  ratio $(ratio "$vb" "$lb");" \
+        "core probe before/after, adds/cycle: veridem $vp  LAMMPS $lp"
     done
     if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
       b=$(veridem_rate "$VERIDEM_BASELINE_BENCH" 1)
@@ -82,16 +90,20 @@ for scene in bed gas; do
     "$bench" --scene "$scene" --steps "$steps" --threads "$n" --file "$shared/$( [ $scene = bed ] && echo settled_bed_20k || echo random_gas_20k ).xyz" \
       | sed 's/^/   veridem /'
     if command -v lmp > /dev/null; then
+      echo "   LAMMPS   before: $("$bench" --core-probe)"
       mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/$scene.data" \
         -var steps "$steps" -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
       echo "   LAMMPS   $(rate_of_loop "$work/lammps.log") particle-steps/s  ($(grep '^Loop time' "$work/lammps.log"))"
       echo "   LAMMPS   kinetic energy (trans, rot, total) after $steps steps: $(awk -v s="$steps" '$1 == s && NF == 5 {print $3, $4, $5}' "$work/lammps.log")"
+      echo "   LAMMPS   after: $("$bench" --core-probe)"
     fi
     if command -v liggghts > /dev/null; then
+      echo "   LIGGGHTS before: $("$bench" --core-probe)"
       mpirun --allow-run-as-root --oversubscribe -np "$n" liggghts -in "$here/lammps/bed_liggghts.in" \
         -var data "$work/$scene.data" -var steps "$steps" -log "$work/liggghts.log" -screen none > /dev/null 2>&1
       echo "   LIGGGHTS $(rate_of_loop "$work/liggghts.log") particle-steps/s  ($(grep '^Loop time' "$work/liggghts.log" | cut -d, -f1))"
       echo "   LIGGGHTS kinetic energy (trans, rot) after $steps steps: $(awk -v s="$steps" '$1 == s && NF == 4 {print $3, $4}' "$work/liggghts.log")"
+      echo "   LIGGGHTS after: $("$bench" --core-probe)"
     fi
   done
 done
