@@ -964,7 +964,7 @@ const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, in
         }
         partitionBlocks(weight.data(), blocks, chunks, s.runs);
         s.heaviestShare = heaviestShare(weight.data(), s.runs, chunks);
-        s.runHealth.assign(s.runs.size(), ContactHealth{});
+        s.runHealth.assign(blocks, ContactHealth{});
         s.chunks = chunks;
         s.subListRebuilds = list.activeRebuildCount();
         s.slotRebuilds = list.rebuildCount();
@@ -1001,7 +1001,8 @@ void pairForcesOfSlots(World& world, Real dt)
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
     const SelectPass select = currentVariant()->select;
-    // Health per run of blocks, folded in block order (the order of a serial loop).
+    // Health per block (one thread: per run, in entry 0), folded in block order (the order of a
+    // serial loop).
     ContactHealth* const health = world.pairSchedule.runHealth.data();
     // One run of consecutive blocks: their candidates, selected and evaluated in batches.
     const auto pairRun = [&](const BlockRun& run) -> ContactHealth
@@ -1073,14 +1074,40 @@ void pairForcesOfSlots(World& world, Real dt)
         zeroSums(sink, zeroedEnd, endParticle);
         return ContactHealth{worst.ratio, worst.particle, worst.found, touchingCount};
     };
-    parallelChunks(static_cast<std::size_t>(chunks), chunks,
-                   [&](int chunk, std::size_t, std::size_t)
-                   {
-                       for (std::size_t r = 0; r < runs.size(); ++r)
-                           if (runs[r].chunk == chunk)
-                               health[r] = pairRun(runs[r]);
-                   });
-    foldHealth(world.health, health, static_cast<int>(runs.size()), world.health.touchingPairs);
+    if (chunks == 1)
+    {
+        for (const BlockRun& run : runs)
+            health[run.first] = pairRun(run);
+    }
+    else
+    {
+        // Each thread takes its run's blocks from the front, then the blocks other threads have
+        // not reached yet from the back of their runs (block_partition.h): which thread evaluates
+        // a block changes nothing in the results.
+        BlockRange remaining[kMaxChunks];
+        for (const BlockRun& run : runs)
+            remaining[run.chunk].reset(run.first, run.end);
+        std::size_t taken[kMaxChunks] = {}; // blocks taken from other threads' runs
+        parallelChunks(static_cast<std::size_t>(chunks), chunks,
+                       [&](int chunk, std::size_t, std::size_t)
+                       {
+                           const auto evaluate = [&](std::uint32_t b) {
+                               health[b] = pairRun(BlockRun{b, b + 1, chunk});
+                           };
+                           while (const std::optional<std::uint32_t> b = remaining[chunk].takeFront())
+                               evaluate(*b);
+                           for (int k = 1; k < chunks; ++k)
+                               while (const std::optional<std::uint32_t> b =
+                                          remaining[(chunk + k) % chunks].takeBack())
+                               {
+                                   evaluate(*b);
+                                   ++taken[chunk];
+                               }
+                       });
+        for (int c = 0; c < chunks; ++c)
+            world.pairSchedule.blocksTaken += taken[c];
+    }
+    foldHealth(world.health, health, static_cast<int>(blocks), world.health.touchingPairs);
 }
 
 } // namespace

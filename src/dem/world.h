@@ -57,7 +57,8 @@ struct PairSchedule
     int chunks = 0;
     std::size_t subListRebuilds = 0, slotRebuilds = 0, particles = 0; // what it was made for
     double heaviestShare = 0;             // the busiest thread's share of the candidates [-]
-    std::vector<ContactHealth> runHealth; // per run, written by its thread
+    std::vector<ContactHealth> runHealth; // per block, written by the thread that evaluated it
+    std::uint64_t blocksTaken = 0;        // blocks evaluated by a thread other than their run's, in all
 };
 
 struct World

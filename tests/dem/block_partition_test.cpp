@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 using namespace veridem::dem;
@@ -88,4 +89,51 @@ TEST(BlockPartition, MoreChunksThanBlocksLeavesSomeEmpty)
     partitionBlocks(w.data(), w.size(), 4, runs);
     expectCover(runs, w.size(), 4);
     EXPECT_LE(runs.size(), 2u);
+}
+
+TEST(BlockRange, FrontAndBackTakeEachBlockOnce)
+{
+    BlockRange range;
+    range.reset(3, 9);
+    std::vector<std::uint32_t> taken;
+    for (int k = 0; k < 10; ++k) // alternating ends: 3, 8, 4, 7, 5, 6, then nothing
+        if (const auto b = (k % 2 == 0) ? range.takeFront() : range.takeBack())
+            taken.push_back(*b);
+    EXPECT_EQ(taken, (std::vector<std::uint32_t>{3, 8, 4, 7, 5, 6}));
+    EXPECT_FALSE(range.takeFront());
+    EXPECT_FALSE(range.takeBack());
+    range.reset(5, 5); // an empty run
+    EXPECT_FALSE(range.takeFront());
+}
+
+TEST(BlockRange, TwoThreadsTakeEachBlockExactlyOnce)
+{
+    // One thread from the front, one from the back, racing on the same range: every block is
+    // taken by exactly one of them, the front's blocks ascending and the back's descending.
+    constexpr std::uint32_t kBlocks = 20000;
+    for (int round = 0; round < 20; ++round)
+    {
+        BlockRange range;
+        range.reset(0, kBlocks);
+        std::vector<std::uint32_t> front, back;
+        std::thread owner(
+            [&]
+            {
+                while (const auto b = range.takeFront())
+                    front.push_back(*b);
+            });
+        std::thread helper(
+            [&]
+            {
+                while (const auto b = range.takeBack())
+                    back.push_back(*b);
+            });
+        owner.join();
+        helper.join();
+        ASSERT_EQ(front.size() + back.size(), kBlocks);
+        for (std::size_t k = 0; k < front.size(); ++k)
+            ASSERT_EQ(front[k], k);
+        for (std::size_t k = 0; k < back.size(); ++k)
+            ASSERT_EQ(back[k], kBlocks - 1 - k);
+    }
 }
