@@ -1306,6 +1306,162 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     return health;
 }
 
+/// A plane wall as the plane-wall pass reads it, from wallGap and wallSurfaceVelocity with the
+/// parts that do not depend on the particle computed once, by the same operations: the plane's
+/// current point [m] and unit normal, its disk radius squared [m^2] (if finite), and its surface
+/// velocity field at the half step (velocity [m/s], angular velocity [rad/s], a point of the
+/// rotation axis [m]).
+struct PlaneFrame
+{
+    Vec3 origin, normal;
+    bool finiteDisk;
+    Real disk2;
+    Vec3 velocity, angularVelocity, axis;
+    std::uint32_t material;
+};
+
+constexpr std::size_t kMaxPlaneFrames = 16; // more walls than this take the general pass
+
+/// The frames of `walls` at the half step (timeOffset -dt/2, as wallContactInput); false if some
+/// wall is not a plane or there are more than kMaxPlaneFrames.
+bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
+{
+    if (walls.size() > kMaxPlaneFrames)
+        return false;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+    {
+        const Wall& wall = walls[w];
+        const PlaneShape* plane = std::get_if<PlaneShape>(&wall.shape);
+        if (!plane)
+            return false;
+        const Real timeOffset = -0.5 * dt;
+        frames[w] = {plane->point + wall.displacement,
+                     plane->normal,
+                     std::isfinite(plane->diskRadius),
+                     plane->diskRadius * plane->diskRadius,
+                     wall.motion.velocity,
+                     wall.motion.angularVelocity,
+                     wall.motion.rotationCentre + wall.displacement + timeOffset * wall.motion.velocity,
+                     wall.material};
+    }
+    return true;
+}
+
+/// wallForcesInLanes for plane walls (frames from planeFrames), the wall's part of wallGap and
+/// wallSurfaceVelocity taken from its frame: the same operations on the same values, so the same
+/// bits. Inlined into an instruction-set variant below (three-operand AVX encodings of the same
+/// scalar operations for the AVX2 one).
+template <class Lanes>
+VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std::size_t begin,
+                                                     std::size_t end, const PlaneFrame* frames)
+{
+    ParticleStore& p = world.particles;
+    WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
+    const Vec3* const position = p.position.data();
+    const Vec3* const velocity = p.velocity.data();
+    const Vec3* const angularVelocity = p.angularVelocity.data();
+    const Real* const radius = p.radius.data();
+    const Real* const mass = p.mass.data();
+    PaddedVec3* const force = p.force.data();
+    PaddedVec3* const torque = p.torque.data();
+    const std::uint32_t* const particle = list.particle.data();
+    const std::uint32_t* const wallOf = list.wall.data();
+    Vec3* const spring = list.tangentialSpring.data();
+    const bool rolling = list.keepRollingHistory;
+    const Real halfStep = 0.5 * dt;
+    LawBatch b;
+    std::size_t m = 0;
+    // (Inlined: a lambda's own function would not have the caller's instruction set.)
+    const auto run = [&]() __attribute__((always_inline))
+    {
+        lawLanes<Lanes, false>(b, m, dt, uniform);
+        for (std::size_t q = 0; q < m; ++q)
+        {
+            const std::uint32_t i = b.particle[q];
+            const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
+            if (rolling) // (the lane law keeps no rolling spring: zero, as wallForcesInLanes)
+                list.setHistory(b.slot[q],
+                                ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, Vec3{}});
+            else
+                spring[b.slot[q]] = {b.springX[q], b.springY[q], b.springZ[q]};
+            const Vec3 arm = -radius[i] * normal;
+            const Vec3 f = b.normalForce[q] * normal + tangential, t = Vec3{} + cross(arm, tangential);
+            force[i].x += f.x;
+            force[i].y += f.y;
+            force[i].z += f.z;
+            torque[i].x += t.x;
+            torque[i].y += t.y;
+            torque[i].z += t.z;
+            foldWallOverlap(i, b.overlap[q], radius[i], health);
+        }
+        m = 0;
+    };
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = particle[k];
+        const PlaneFrame& frame = frames[wallOf[k]];
+        // wallGap(PlaneShape): the same tests, so the same choice for every value (NaN included).
+        const Vec3 x = position[i];
+        const Real r = radius[i];
+        const Vec3 relative = x - frame.origin;
+        const Real distance = dot(relative, frame.normal);
+        const Real overlap = r - distance;
+        bool touching = !(overlap <= 0) && !(distance < -r);
+        if (touching && frame.finiteDisk)
+            touching = !(lengthSquared(relative - distance * frame.normal) > frame.disk2);
+        if (!touching)
+        {
+            spring[k] = Vec3{};
+            if (rolling)
+                list.setHistory(k, ContactHistory{});
+            continue;
+        }
+        ++health.touching;
+        // wallContactInput.
+        const Vec3 v = velocity[i], w = angularVelocity[i];
+        const Vec3 arm = -r * frame.normal;
+        const Vec3 midStepContactPoint = x - halfStep * v + arm;
+        const Vec3 surfaceVelocity =
+            frame.velocity + cross(frame.angularVelocity, midStepContactPoint - frame.axis);
+        const Vec3 relativeVelocity = v + cross(w, arm) - surfaceVelocity;
+        const Vec3 h = spring[k];
+        b.slot[m] = static_cast<std::uint32_t>(k);
+        b.particle[m] = i;
+        b.nx[m] = frame.normal.x;
+        b.ny[m] = frame.normal.y;
+        b.nz[m] = frame.normal.z;
+        b.overlap[m] = overlap;
+        b.rvx[m] = relativeVelocity.x;
+        b.rvy[m] = relativeVelocity.y;
+        b.rvz[m] = relativeVelocity.z;
+        b.mass[m] = mass[i];
+        b.hx[m] = h.x;
+        b.hy[m] = h.y;
+        b.hz[m] = h.z;
+        if (!uniform)
+            b.law.set(m, world.pairs(p.material[i], frame.material));
+        if (++m == kBatch)
+            run();
+    }
+    if (m > 0)
+        run();
+    return health;
+}
+
+VERIDEM_AVX2_TARGET ContactHealth planeWallForcesAvx2(World& world, Real dt, std::size_t begin,
+                                                      std::size_t end, const PlaneFrame* frames)
+{
+    return planeWallForcesBody<Lanes4>(world, dt, begin, end, frames);
+}
+
+ContactHealth planeWallForcesPortable(World& world, Real dt, std::size_t begin, std::size_t end,
+                                      const PlaneFrame* frames)
+{
+    return planeWallForcesBody<Lanes2>(world, dt, begin, end, frames);
+}
+
 /// Wall contact k of the particle whose state is `s`, through the general contact law (any
 /// model): updates the contact's history (cleared if it is not touching); if it touches, adds its
 /// force [N] and torque [N m] to `force` and `torque` and folds it into `health`.
@@ -1346,7 +1502,13 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     if (list.size() == 0 || list.start.size() != p.size() + 1)
         return health;
     if (lanesApply(world))
-        return wallForcesInLanes(world, dt, begin, end);
+    {
+        PlaneFrame frames[kMaxPlaneFrames];
+        if (!planeFrames(world.walls, dt, frames))
+            return wallForcesInLanes(world, dt, begin, end);
+        return laneKernelIsAvx2() ? planeWallForcesAvx2(world, dt, begin, end, frames)
+                                  : planeWallForcesPortable(world, dt, begin, end, frames);
+    }
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
         const std::uint32_t i = list.particle[k];

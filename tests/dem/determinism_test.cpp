@@ -164,6 +164,45 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
     ASSERT_TRUE(selectLaneKernel(initial));
 }
 
+/// The plane-wall pass of the lane path (forces.cpp, planeWallForcesBody) takes each wall's part of
+/// the gap and surface velocity from a frame made once per call: on a floor that is a finite disk,
+/// rotating about its normal and translating, with particles on and off the disk, it must still
+/// give the scalar path's bits (jostlingBox's walls are infinite and at rest).
+TEST(Determinism, PlaneWallPassMatchesScalarPathOnAMovingDisk)
+{
+    const auto movingDisk = [](bool batched)
+    {
+        World world = jostlingBox(true, 10);
+        const Real box = 10 * 2.05e-3;
+        Wall& floor = world.walls.back();
+        floor.shape = PlaneShape{{0.5 * box, 0.5 * box, 0}, {0, 0, 1}, 0.45 * box}; // corners off the disk
+        floor.motion.velocity = {0.02, -0.01, 0};
+        floor.motion.angularVelocity = {0, 0, 40};
+        floor.motion.rotationCentre = {0.5 * box, 0.5 * box, 0};
+        world.batchedContactKernel = batched;
+        for (int s = 0; s < 500; ++s)
+            step(world, 1e-5);
+        return world;
+    };
+    const World scalar = movingDisk(false);
+    EXPECT_GT(scalar.health.touchingWalls, 0u);
+    const std::string initial = laneKernelName();
+    for (const char* variant : {"avx2", "portable"})
+    {
+        if (!selectLaneKernel(variant))
+            continue; // this CPU cannot run it
+        const World batched = movingDisk(true);
+        EXPECT_TRUE(sameBits(batched.particles.position, scalar.particles.position)) << variant;
+        EXPECT_TRUE(sameBits(batched.particles.velocity, scalar.particles.velocity)) << variant;
+        EXPECT_TRUE(sameBits(batched.particles.angularVelocity, scalar.particles.angularVelocity)) << variant;
+        EXPECT_TRUE(sameBits(batched.wallContacts.tangentialSpring, scalar.wallContacts.tangentialSpring))
+            << variant;
+        EXPECT_EQ(batched.health.touchingWalls, scalar.health.touchingWalls) << variant;
+        EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << variant;
+    }
+    ASSERT_TRUE(selectLaneKernel(initial));
+}
+
 /// Random particle state for the integration loops: n particles with velocities, spins, forces
 /// and torques of mixed signs and magnitudes.
 ParticleStore randomParticles(std::size_t n, std::mt19937& rng)
