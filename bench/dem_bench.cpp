@@ -362,8 +362,8 @@ int run(int argc, char** argv)
                     static_cast<double>(world.neighbors.size()) / static_cast<double>(n),
                     world.neighbors.rebuildCount(), world.health.maxOverlapRatio);
         std::printf("  cross-block slots %zu (%.1f %% of slots; blocks of %u particles)\n",
-                    world.neighbors.deferredForce.size(),
-                    100.0 * static_cast<double>(world.neighbors.deferredForce.size()) /
+                    world.neighbors.deferred.size(),
+                    100.0 * static_cast<double>(world.neighbors.deferred.size()) /
                         static_cast<double>(std::max<std::size_t>(world.neighbors.size(), 1)),
                     NeighborList::kBlockParticles);
         if (world.pairSchedule.chunks > 1)

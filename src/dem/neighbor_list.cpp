@@ -218,9 +218,9 @@ std::size_t NeighborList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(first) + bytes(second) + bytes(activeSpring) + bytes(activeRolling) +
            bytes(activeMayBeActive) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
-           bytes(source_) + bytes(within_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferredForce) +
-           bytes(deferredTorque) + bytes(incomingStart) + bytes(incomingEntry) + bytes(activeSlots) +
-           bytes(activeFirst) + bytes(activeSecond) + bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
+           bytes(source_) + bytes(within_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferred) +
+           bytes(incomingStart) + bytes(incomingEntry) + bytes(activeSlots) + bytes(activeFirst) +
+           bytes(activeSecond) + bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
 }
 
 void NeighborList::rebuild(const ParticleStore& particles)
@@ -244,8 +244,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
         first.clear();
         second.clear();
         deferredIndex.clear();
-        deferredForce.clear();
-        deferredTorque.clear();
+        deferred.clear();
         incomingEntry.clear();
         forgetCandidates();
         return;
@@ -361,8 +360,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
     }
     for (std::size_t i = 0; i < n; ++i)
         incomingStart[i + 1] += incomingStart[i];
-    deferredForce.assign(deferredCount, Vec3{});
-    deferredTorque.assign(deferredCount, Vec3{});
+    deferred.assign(deferredCount, DeferredShare{});
     std::vector<std::uint32_t>(deferredCount).swap(incomingEntry);
     std::vector<std::uint32_t> fill(incomingStart.begin(), incomingStart.end() - 1);
     for (std::size_t k = 0; k < pairCount; ++k)

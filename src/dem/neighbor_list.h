@@ -48,16 +48,21 @@ class NeighborList
     static constexpr std::uint32_t kBlockParticles = 1024;
     std::vector<std::uint32_t> firstStart; // slots [firstStart[p], firstStart[p+1]) have first == p
 
-    // Cross-block slots. deferredIndex[k] is the slot's entry in deferredForce/deferredTorque, or
-    // kInBlock. The entries hold, after the force loop, the force [N] and torque [N m] on the
-    // slot's second particle (zero while the slot is open). They are numbered in slot order, so
-    // each block's are one range that the pair loop writes in sequence, and no two threads write
+    // Cross-block slots. deferredIndex[k] is the slot's entry in `deferred`, or kInBlock. The
+    // entries hold, after the force loop, the force [N] and torque [N m] on the slot's second
+    // particle (zero while the slot is open), both padded rows in one 64-byte line, so that the
+    // particle pass gathers each entry with one cache line and two 32-byte loads. They are numbered in slot
+    // order, so each block's are one range that the pair loop writes in sequence, and no two threads write
     // into one cache line but at a range's ends (numbered by second particle, the writes of two
     // threads interleaved; the particle pass now gathers through incomingEntry instead).
     static constexpr std::uint32_t kInBlock = 0xffffffffu;
     std::vector<std::uint32_t> deferredIndex;
-    std::vector<Vec3> deferredForce;
-    std::vector<Vec3> deferredTorque;
+    struct alignas(64) DeferredShare
+    {
+        PaddedVec3 force;  // [N]
+        PaddedVec3 torque; // [N m]
+    };
+    std::vector<DeferredShare> deferred;
     // incomingEntry[incomingStart[p] .. incomingStart[p+1]) are the entries whose second particle is
     // p, in ascending slot order.
     std::vector<std::uint32_t> incomingStart, incomingEntry;
@@ -138,8 +143,7 @@ class NeighborList
     {
         if (entry != kInBlock)
         {
-            deferredForce[entry] = Vec3{};
-            deferredTorque[entry] = Vec3{};
+            deferred[entry] = DeferredShare{};
         }
     }
     /// The new sub-list's slots into activeSlots and, per candidate, the old candidate whose

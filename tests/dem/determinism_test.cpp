@@ -316,7 +316,7 @@ TEST(Determinism, BlockSumsEqualAPlainSerialLoopOverSlots)
     }
     ASSERT_GT(touching, 1000u);
     EXPECT_EQ(world.health.touchingPairs, touching);
-    ASSERT_GT(world.neighbors.deferredForce.size(), 0u); // the box spans several blocks
+    ASSERT_GT(world.neighbors.deferred.size(), 0u); // the box spans several blocks
     Real maxForce = 0, maxTorque = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
     {

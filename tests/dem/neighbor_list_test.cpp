@@ -100,7 +100,7 @@ TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
     list.skin = 0.5e-3;
     list.rebuild(p);
     list.refreshActiveSlots(p);
-    ASSERT_GT(list.deferredForce.size(), 0u);
+    ASSERT_GT(list.deferred.size(), 0u);
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> oldIndex;
     for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
     {
@@ -108,7 +108,7 @@ TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
         list.activeSpring[a] = keyValue(i, j);
         list.activeMayBeActive[a] = static_cast<std::uint8_t>(a % 2); // half may be in contact
         if (list.activeDeferred[a] != NeighborList::kInBlock)
-            list.deferredForce[list.activeDeferred[a]] = {1, 2, 3};
+            list.deferred[list.activeDeferred[a]].force = Vec3{1, 2, 3};
         oldIndex[{i, j}] = a;
     }
     const std::vector<std::uint32_t> oldDeferred = list.activeDeferred;
@@ -154,7 +154,7 @@ TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
         if (!continued.count(b) && oldDeferred[b] != NeighborList::kInBlock)
         {
             const Vec3 expected = oldFlag[b] ? Vec3{} : Vec3{1, 2, 3};
-            EXPECT_EQ(list.deferredForce[oldDeferred[b]], expected);
+            EXPECT_EQ(list.deferred[oldDeferred[b]].force, expected);
             zeroed += oldFlag[b];
         }
     EXPECT_GT(zeroed, 0u);
