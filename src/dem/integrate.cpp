@@ -183,4 +183,45 @@ VERIDEM_AVX2_TARGET bool kickLanes(ParticleStore& p, const Vec3& gravity, Real d
     return kickRange(p, gravity, dt, i, end) && finite; // the last 0-3 particles
 }
 
+VERIDEM_AVX2_TARGET bool kickThenKickDriftLanes(ParticleStore& p, const Vec3& gravity, Real dt,
+                                                NeighborList::MotionReference reference, std::size_t begin,
+                                                std::size_t end, Motion& m)
+{
+    const Real half = 0.5 * dt;
+    const GravityRows g(gravity);
+    const IntegrationArrays a(p);
+    Lanes4 probe = {}, farBuilt = {}, farActive = {};
+    std::size_t i = begin;
+    for (; i + 4 <= end; i += 4)
+    {
+        const Spread inverseMass(lanes::load<Lanes4>(a.invMass + i));
+        const Spread halfInverseInertia(half * lanes::load<Lanes4>(a.invInertia + i));
+        const PaddedRows force = loadPaddedRows(a.force, i), torque = loadPaddedRows(a.torque, i);
+        Lanes4 x[3];
+        for (int r = 0; r < 3; ++r)
+        {
+            // kickLanes: v(t) = v(t-dt/2) + half (F/m + g); w likewise; the finiteness probe.
+            const KickedRows kicked =
+                halfKickRow(a, i, r, half, inverseMass, halfInverseInertia, g, force, torque);
+            const Lanes4 position = loadRow(a.position, i, r);
+            probe = probe + (0.0 * position + 0.0 * kicked.velocity + 0.0 * kicked.angularVelocity);
+            // kickDriftLanes: the same half kick again (the same force), then x += dt v.
+            const Lanes4 velocity = kicked.velocity + half * (force.row[r] * inverseMass.row[r] + g.row[r]);
+            const Lanes4 angularVelocity = kicked.angularVelocity + halfInverseInertia.row[r] * torque.row[r];
+            storeRow(a.velocity, i, r, velocity);
+            storeRow(a.angularVelocity, i, r, angularVelocity);
+            x[r] = position + dt * velocity;
+            storeRow(a.position, i, r, x[r]);
+        }
+        if (reference.built)
+        {
+            farBuilt = fartherOf(farBuilt, x, reference.built, i);
+            farActive = fartherOf(farActive, x, reference.activeBuilt, i);
+        }
+    }
+    m = {foldMax(m.sinceBuild2, farBuilt), foldMax(m.sinceActiveBuild2, farActive)};
+    const bool finite = probe[0] == 0.0 && probe[1] == 0.0 && probe[2] == 0.0 && probe[3] == 0.0;
+    return kickThenKickDriftRange(p, gravity, dt, reference, i, end, m) && finite; // the last 0-3
+}
+
 } // namespace veridem::dem

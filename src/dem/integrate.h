@@ -164,6 +164,35 @@ inline bool kick(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t beg
     return lanes ? kickLanes(p, gravity, dt, begin, end) : kickRange(p, gravity, dt, begin, end);
 }
 
+/// Particles [begin, end): the closing half kick of one step (kickOne), then the next step's
+/// kick-drift (kickDriftOne), in one pass: the operations of kickRange followed by kickDriftRange,
+/// so the same bits, with each particle's rows loaded and stored once (advance(), world.cpp).
+/// Folds the displacements from `reference` into `m` as kickDriftRange; returns false if some
+/// state after the kick (x(t), v(t), w(t)) is not finite.
+inline bool kickThenKickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
+                                   NeighborList::MotionReference reference, std::size_t begin,
+                                   std::size_t end, Motion& m)
+{
+    const bool finite = kickRange(p, gravity, dt, begin, end);
+    m = kickDriftRange(p, gravity, dt, reference, begin, end, m);
+    return finite;
+}
+
+/// kickThenKickDriftRange in four AVX2 lanes (integrate.cpp): the same operations and bits. Only
+/// on a CPU with AVX2.
+bool kickThenKickDriftLanes(ParticleStore& p, const Vec3& gravity, Real dt,
+                            NeighborList::MotionReference reference, std::size_t begin, std::size_t end,
+                            Motion& m);
+
+/// kickThenKickDriftRange, in AVX2 lanes if `lanes`.
+inline bool kickThenKickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
+                              NeighborList::MotionReference reference, std::size_t begin, std::size_t end,
+                              bool lanes, Motion& m)
+{
+    return lanes ? kickThenKickDriftLanes(p, gravity, dt, reference, begin, end, m)
+                 : kickThenKickDriftRange(p, gravity, dt, reference, begin, end, m);
+}
+
 /// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry
 /// unchanged; only translation moves it).
 inline void moveWalls(std::vector<Wall>& walls, Real dt)

@@ -102,8 +102,11 @@ constexpr std::size_t kFinishBlock = 512;
 /// hot in cache: their cross-block pair contacts, their wall contacts (both in slot order), then
 /// the final half kick v(t+dt) = v(t+dt/2) + dt/2 a(t+dt). Each particle's operations, and the
 /// order of the health record, are those of one pass over the range. Returns the wall health and
-/// sets `finite` to false if some state of the range is not finite.
-ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t end, bool lanes, bool& finite)
+/// sets `finite` to false if some state of the range is not finite. With `drift` (advance()), the
+/// kick is followed by the next step's kick-drift (kickThenKickDrift), its motion from `drift`'s
+/// reference folded into `motion`.
+ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t end, bool lanes, bool& finite,
+                          const NeighborList::MotionReference* drift, Motion& motion)
 {
     ContactHealth health{0, 0, false, 0};
     finite = true;
@@ -126,19 +129,25 @@ ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t 
         health.touching += walls.touching;
         if (walls.found && walls.maxOverlapRatio > health.maxOverlapRatio) // first of the largest
             health = {walls.maxOverlapRatio, walls.worstParticle, true, health.touching};
-        finite = kick(world.particles, world.gravity, dt, s, e, lanes) && finite;
+        finite = (drift ? kickThenKickDrift(world.particles, world.gravity, dt, *drift, s, e, lanes, motion)
+                        : kick(world.particles, world.gravity, dt, s, e, lanes)) &&
+                 finite;
     }
     return health;
 }
 
 /// Stage 4, one pass over the particles, in chunks (one per thread); health is combined in
-/// chunk order. `lanes`: the kick runs in AVX2 lanes.
-void finishParticles(World& world, Real dt, bool lanes)
+/// chunk order. `lanes`: the kick runs in AVX2 lanes. `driftNext` (advance()): the pass also runs
+/// the next step's kick-drift and returns its motion (else zero motion).
+Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
 {
     ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     const int chunks = std::min(loopThreads(n), 64);
-    if (chunks == 1 && n <= kFinishBlock) // one ball on a turntable: the three calls, nothing else
+    const NeighborList::MotionReference reference = world.neighbors.motionReference(n);
+    const NeighborList::MotionReference* const drift = driftNext ? &reference : nullptr;
+    Motion motion;
+    if (chunks == 1 && n <= kFinishBlock && !drift) // a few balls: the three calls, nothing else
     {
         addCrossBlockForces(world, 0, n);
         const ContactHealth walls = computeWallForces(world, dt, 0, n);
@@ -148,7 +157,7 @@ void finishParticles(World& world, Real dt, bool lanes)
     else if (chunks == 1) // no parallel region, no chunk arrays
     {
         bool finite = true;
-        const ContactHealth walls = finishRange(world, dt, 0, n, lanes, finite);
+        const ContactHealth walls = finishRange(world, dt, 0, n, lanes, finite, drift, motion);
         mergeWallHealth(world.health, &walls, 1);
         world.health.finite = finite;
     }
@@ -156,14 +165,19 @@ void finishParticles(World& world, Real dt, bool lanes)
     {
         ContactHealth walls[64]{}; // (zeroed: GCC cannot see that chunks <= 64 entries are written)
         bool finite[64]{};
+        Motion moved[64];
         parallelChunks(n, chunks,
                        [&](int c, std::size_t begin, std::size_t end)
-                       { walls[c] = finishRange(world, dt, begin, end, lanes, finite[c]); });
+                       { walls[c] = finishRange(world, dt, begin, end, lanes, finite[c], drift, moved[c]); });
         mergeWallHealth(world.health, walls, chunks);
         world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
+        for (int c = 0; c < chunks; ++c) // a maximum: the same for any chunking
+            motion = {std::max(motion.sinceBuild2, moved[c].sinceBuild2),
+                      std::max(motion.sinceActiveBuild2, moved[c].sinceActiveBuild2)};
     }
     if (!world.health.finite)
         recordFirstNonFinite(p, world.health);
+    return motion;
 }
 
 /// True if the integration loops run in AVX2 lanes (integrate.cpp, the same bits as the scalar
@@ -231,6 +245,27 @@ VERIDEM_AVX2_TARGET void stepOneParticleAvx2(World& world, Real dt)
     stepOneParticleBody(world, dt, wallContactsOfAvx2);
 }
 
+/// The stages of step() after the kick-drift (`moved`: the motion it measured): wall motion,
+/// neighbours, pairs, particles. `driftNext` (advance()): the particle pass closes with the next
+/// step's kick-drift too, whose motion it returns (else zero motion).
+Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes, bool driftNext,
+                          StageClock& clock)
+{
+    moveWalls(world.walls, dt); // wall motion to t+dt
+    clock.lap(&StepProfile::integration);
+    if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
+        rebuildContactLists(world);
+    clock.lap(&StepProfile::neighbours);
+    computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
+    clock.lap(&StepProfile::pairForces);
+    // 4. cross-block and wall contacts, then v(t+dt) (and, if driftNext, v(t+3dt/2), x(t+2dt))
+    const Motion next = finishParticles(world, dt, lanes, driftNext);
+    clock.lap(&StepProfile::particlePass);
+    world.time += dt;
+    ++world.stepCount;
+    return next;
+}
+
 } // namespace
 
 void prepare(World& world)
@@ -279,23 +314,41 @@ void step(World& world, Real dt)
     }
 
     StageClock clock(world.profile);
-
     const bool lanes = integrationInLanes(world);
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
                   lanes);
-    moveWalls(world.walls, dt); // wall motion to t+dt
-    clock.lap(&StepProfile::integration);
-    if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
-        rebuildContactLists(world);
-    clock.lap(&StepProfile::neighbours);
-    computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
-    clock.lap(&StepProfile::pairForces);
-    finishParticles(world, dt, lanes); // 4. cross-block and wall contacts, then v(t+dt)
-    clock.lap(&StepProfile::particlePass);
+    stepAfterKickDrift(world, dt, moved, lanes, false, clock);
+}
 
-    world.time += dt;
-    ++world.stepCount;
+std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverlapRatio)
+{
+    if (!world.prepared)
+        prepare(world);
+    const auto failed = [&]
+    { return !world.health.finite || world.health.maxOverlapRatio > maxOverlapRatio; };
+    if (world.particles.size() <= 1) // (one ball has its own step, with nothing to fuse)
+    {
+        for (std::uint64_t s = 0; s < steps; ++s)
+        {
+            step(world, dt);
+            if (failed())
+                return s + 1;
+        }
+        return steps;
+    }
+    StageClock clock(world.profile);
+    const bool lanes = integrationInLanes(world);
+    Motion moved = kickDrift(world.particles, world.gravity, dt,
+                             world.neighbors.motionReference(world.particles.size()), lanes);
+    for (std::uint64_t s = 0; s < steps; ++s)
+    {
+        // Every step but the last closes with the next one's kick-drift (its motion returned).
+        moved = stepAfterKickDrift(world, dt, moved, lanes, s + 1 < steps, clock);
+        if (failed())
+            return s + 1;
+    }
+    return steps;
 }
 
 Real kineticEnergy(const World& world)

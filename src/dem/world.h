@@ -10,6 +10,7 @@
 #include "dem/walls/wall.h"
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,17 @@ void prepare(World& world);
 
 /// Advances the world by dt [s] with velocity Verlet (see world.cpp for the stages).
 void step(World& world, Real dt);
+
+/// Advances the world by `steps` steps of dt [s]: the same operations and bits as `steps` calls of
+/// step(), but each step's closing half kick and the next step's kick-drift run as one pass over
+/// the particles (one load and store of their rows instead of two; one parallel region fewer).
+/// For runs that look at the world only every so many steps. Stops early after a step whose
+/// health is bad: some state not finite, or world.health.maxOverlapRatio > maxOverlapRatio [-];
+/// then world.health describes that step, but the particles have already had the next step's
+/// first half kick and drift (the state is fit only for reporting the failure). Returns the
+/// steps done.
+std::uint64_t advance(World& world, Real dt, std::uint64_t steps,
+                      Real maxOverlapRatio = std::numeric_limits<Real>::infinity());
 
 /// Kinetic energy, translational + rotational [J].
 Real kineticEnergy(const World& world);

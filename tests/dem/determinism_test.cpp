@@ -164,6 +164,57 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
     ASSERT_TRUE(selectLaneKernel(initial));
 }
 
+/// advance() fuses each step's closing kick with the next step's kick-drift: the same operations,
+/// so after any split into calls the state must be bit for bit that of as many step() calls, on
+/// one thread and on two.
+TEST(Determinism, AdvanceGivesTheBitsOfStepCalls)
+{
+    for (const int threads : {1, 2})
+    {
+#ifdef _OPENMP
+        const int previous = omp_get_max_threads();
+        omp_set_num_threads(threads);
+#else
+        if (threads > 1)
+            continue;
+#endif
+        World stepped = jostlingBox(true), advanced = jostlingBox(true); // (above kParallelThreshold)
+        for (int s = 0; s < 300; ++s)
+            step(stepped, 1e-5);
+        EXPECT_EQ(advance(advanced, 1e-5, 137), 137u);
+        EXPECT_EQ(advance(advanced, 1e-5, 1), 1u);
+        EXPECT_EQ(advance(advanced, 1e-5, 162), 162u);
+#ifdef _OPENMP
+        omp_set_num_threads(previous);
+#endif
+        EXPECT_EQ(advanced.stepCount, stepped.stepCount) << threads;
+        EXPECT_EQ(advanced.time, stepped.time) << threads;
+        EXPECT_TRUE(sameBits(advanced.particles.position, stepped.particles.position)) << threads;
+        EXPECT_TRUE(sameBits(advanced.particles.velocity, stepped.particles.velocity)) << threads;
+        EXPECT_TRUE(sameBits(advanced.particles.angularVelocity, stepped.particles.angularVelocity))
+            << threads;
+        EXPECT_TRUE(sameBits(advanced.neighbors.activeSpring, stepped.neighbors.activeSpring)) << threads;
+        EXPECT_EQ(advanced.neighbors.rebuildCount(), stepped.neighbors.rebuildCount()) << threads;
+        EXPECT_EQ(advanced.health.maxOverlapRatio, stepped.health.maxOverlapRatio) << threads;
+    }
+}
+
+/// advance() stops after the first step whose state is not finite, or whose overlap exceeds the
+/// limit, and says how many steps it did.
+TEST(Determinism, AdvanceStopsAfterABadStep)
+{
+    World blowUp = jostlingBox(true, 10);
+    blowUp.particles.velocity[7].x = std::numeric_limits<Real>::quiet_NaN();
+    EXPECT_EQ(advance(blowUp, 1e-5, 50), 1u);
+    EXPECT_FALSE(blowUp.health.finite);
+    EXPECT_EQ(blowUp.health.firstNonFinite, 7u);
+
+    World packed = jostlingBox(true, 10); // overlaps of order 1e-3 of the radius within a few steps
+    const std::uint64_t done = advance(packed, 1e-5, 200, 1e-9);
+    EXPECT_LT(done, 200u);
+    EXPECT_GT(packed.health.maxOverlapRatio, 1e-9);
+}
+
 /// The plane-wall pass of the lane path (forces.cpp, planeWallForcesBody) takes each wall's part of
 /// the gap and surface velocity from a frame made once per call: on a floor that is a finite disk,
 /// rotating about its normal and translating, with particles on and off the disk, it must still
