@@ -348,7 +348,7 @@ int run(int argc, char** argv)
                     (peak - residentBefore) / static_cast<double>(n));
         const ParticleStore& store = world.particles;
         const double particleBytes =
-            static_cast<double>(n * (3 * sizeof(store.position[0]) + 2 * sizeof(store.force[0]) +
+            static_cast<double>(n * (3 * sizeof(store.position[0]) + 3 * sizeof(store.force[0]) +
                                      4 * sizeof(Real) + sizeof(std::uint32_t)));
         std::printf(
             "  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",

@@ -22,6 +22,7 @@
 #include "dem/parallel.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -291,6 +292,7 @@ struct Candidates
     const std::uint32_t* second;
     const Vec3* position;
     const Real* radius;
+    const PaddedVec3* positionRadius; // (x, y, z, r) per particle: position and radius in one row
     const std::uint8_t* mayBeActive;
     std::size_t end; // one past the chunk's last candidate
 };
@@ -752,8 +754,7 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
                                                    PairBatch& b, std::size_t& m, std::uint32_t* opened,
                                                    std::size_t& o)
 {
-    const Vec3* const position = c.position;
-    const Real* const radius = c.radius;
+    const PaddedVec3* const positionRadius = c.positionRadius;
     const std::uint8_t* const mayBeActive = c.mayBeActive;
     const std::size_t end = c.end;
     std::size_t touchingEnd = m, openedEnd = o;
@@ -765,11 +766,26 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
             break;
         const std::uint32_t* const ahead = c.second + std::min(a + kPrefetchAhead, end - 4);
         for (std::size_t l = 0; l < 4; ++l)
-            __builtin_prefetch(&position[ahead[l]]);
-        const Lanes3<Lanes4> xi = gatherVec3<Lanes4>(position, laneI),
-                             xj = gatherVec3<Lanes4>(position, laneJ);
-        const Lanes4 sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-        const Lanes4 ri = gather<Lanes4>(radius, laneI), rj = gather<Lanes4>(radius, laneJ);
+            __builtin_prefetch(&positionRadius[ahead[l]]);
+        // Each particle's (x, y, z, r) row in one 32-byte load, four rows transposed to lanes.
+        const auto rowLanes = [&](const std::uint32_t* index) __attribute__((always_inline))
+        {
+            const Lanes4 r0 = load<Lanes4>(&positionRadius[index[0]].x),
+                         r1 = load<Lanes4>(&positionRadius[index[1]].x),
+                         r2 = load<Lanes4>(&positionRadius[index[2]].x),
+                         r3 = load<Lanes4>(&positionRadius[index[3]].x);
+            const Lanes4 ab02 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6),
+                         ab13 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7),
+                         cd02 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6),
+                         cd13 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+            return std::array<Lanes4, 4>{__builtin_shufflevector(ab02, cd02, 0, 1, 4, 5),
+                                         __builtin_shufflevector(ab13, cd13, 0, 1, 4, 5),
+                                         __builtin_shufflevector(ab02, cd02, 2, 3, 6, 7),
+                                         __builtin_shufflevector(ab13, cd13, 2, 3, 6, 7)};
+        };
+        const std::array<Lanes4, 4> rowI = rowLanes(laneI), rowJ = rowLanes(laneJ);
+        const Lanes4 sx = rowI[0] - rowJ[0], sy = rowI[1] - rowJ[1], sz = rowI[2] - rowJ[2];
+        const Lanes4 ri = rowI[3], rj = rowJ[3];
         const Lanes4 touching = ri + rj;
         const Lanes4 distance2 = sx * sx + sy * sy + sz * sz;
         const unsigned touchingLanes = static_cast<unsigned>(
@@ -997,6 +1013,9 @@ void pairForcesOfSlots(World& world, Real dt)
     };
     const std::vector<BlockRun>& runs = scheduleBlocks(world, blocks, chunks, activeFrom);
 
+    if (p.positionRadius.size() != n) // (prepare() and every drift keep it; a direct caller may not)
+        p.refreshPositionRadius();
+    const PaddedVec3* const positionRadiusRows = p.positionRadius.data();
     const PairSink sink(world);
     const PairKernel kernel = currentVariant()->kernel;
     const SelectPass select = currentVariant()->select;
@@ -1048,7 +1067,7 @@ void pairForcesOfSlots(World& world, Real dt)
         // are zeroed here, and candidates found open are only recorded, then opened here
         // (openCandidate touches no candidate of the batch, and nothing in this pass reads what
         // it writes again).
-        const Candidates selection{first, second, position, radius, mayBeActive, end};
+        const Candidates selection{first, second, position, radius, positionRadiusRows, mayBeActive, end};
         PairBatch batch;
         std::uint32_t opened[kBatch];
         std::size_t m = 0, o = 0;

@@ -109,6 +109,21 @@ VERIDEM_HOT_INLINE KickedRows halfKickRow(const IntegrationArrays& a, std::size_
             loadRow(a.angularVelocity, i, r) + halfInverseInertia.row[r] * torque.row[r]};
 }
 
+/// Four particles' position rows x (the pattern of four Vec3) and radii r as four (x, y, z, r)
+/// rows from a.positionRadius[i] (if the array is sized).
+VERIDEM_HOT_INLINE void storePositionRadius(const IntegrationArrays& a, std::size_t i, const Lanes4 (&x)[3])
+{
+    if (!a.positionRadius)
+        return;
+    const Lanes4 r = lanes::load<Lanes4>(a.radius + i);
+    const Lanes4 xyz1 = __builtin_shufflevector(x[0], x[1], 3, 4, 5, 5); // x1 y1 z1 -
+    const Lanes4 xyz2 = __builtin_shufflevector(x[1], x[2], 2, 3, 4, 4); // x2 y2 z2 -
+    lanes::store(&a.positionRadius[i].x, __builtin_shufflevector(x[0], r, 0, 1, 2, 4));
+    lanes::store(&a.positionRadius[i + 1].x, __builtin_shufflevector(xyz1, r, 0, 1, 2, 5));
+    lanes::store(&a.positionRadius[i + 2].x, __builtin_shufflevector(xyz2, r, 0, 1, 2, 6));
+    lanes::store(&a.positionRadius[i + 3].x, __builtin_shufflevector(x[2], r, 1, 2, 3, 7));
+}
+
 /// std::max over the lanes, from `m` (lane order does not matter: no NaN is ever taken).
 Real foldMax(Real m, const Lanes4& lanes)
 {
@@ -144,6 +159,7 @@ VERIDEM_AVX2_TARGET Motion kickDriftLanes(ParticleStore& p, const Vec3& gravity,
             x[r] = loadRow(a.position, i, r) + dt * kicked.velocity;
             storeRow(a.position, i, r, x[r]);
         }
+        storePositionRadius(a, i, x);
         if (reference.built)
         {
             farBuilt = fartherOf(farBuilt, x, reference.built, i);
@@ -213,6 +229,7 @@ VERIDEM_AVX2_TARGET bool kickThenKickDriftLanes(ParticleStore& p, const Vec3& gr
             x[r] = position + dt * velocity;
             storeRow(a.position, i, r, x[r]);
         }
+        storePositionRadius(a, i, x);
         if (reference.built)
         {
             farBuilt = fartherOf(farBuilt, x, reference.built, i);

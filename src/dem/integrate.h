@@ -26,18 +26,22 @@ struct Motion
 /// them from the vectors after every store through one of them).
 struct IntegrationArrays
 {
-    Vec3* position;           // [m]
-    Vec3* velocity;           // [m/s]
-    Vec3* angularVelocity;    // [rad/s]
-    const PaddedVec3* force;  // [N]
-    const PaddedVec3* torque; // [N m]
-    const Real* invMass;      // [1/kg]
-    const Real* invInertia;   // [1/(kg m^2)]
+    Vec3* position;             // [m]
+    Vec3* velocity;             // [m/s]
+    Vec3* angularVelocity;      // [rad/s]
+    const PaddedVec3* force;    // [N]
+    const PaddedVec3* torque;   // [N m]
+    const Real* invMass;        // [1/kg]
+    const Real* invInertia;     // [1/(kg m^2)]
+    PaddedVec3* positionRadius; // (x, y, z, r) rows, rewritten with each drift; null if not sized
+    const Real* radius;         // [m]
 
     explicit IntegrationArrays(ParticleStore& p)
         : position(p.position.data()), velocity(p.velocity.data()), angularVelocity(p.angularVelocity.data()),
           force(p.force.data()), torque(p.torque.data()), invMass(p.invMass.data()),
-          invInertia(p.invInertia.data())
+          invInertia(p.invInertia.data()),
+          positionRadius(p.positionRadius.size() == p.size() ? p.positionRadius.data() : nullptr),
+          radius(p.radius.data())
     {
     }
 };
@@ -60,10 +64,13 @@ inline Motion kickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
                              NeighborList::MotionReference reference, std::size_t begin, std::size_t end,
                              Motion m)
 {
+    const bool rows = p.positionRadius.size() == p.size();
     for (std::size_t i = begin; i < end; ++i)
     {
         kickDriftOne(p.position[i], p.velocity[i], p.angularVelocity[i], p.force[i], p.torque[i],
                      p.invMass[i], p.invInertia[i], gravity, dt);
+        if (rows)
+            p.positionRadius[i] = p.positionRadiusRow(i);
         if (reference.built)
         {
             m.sinceBuild2 = std::max(m.sinceBuild2, lengthSquared(p.position[i] - reference.built[i]));

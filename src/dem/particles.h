@@ -43,6 +43,25 @@ struct ParticleStore
     std::vector<Real> invMass;    // [1/kg]
     std::vector<Real> invInertia; // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
     std::vector<std::uint32_t> material;
+    // Position [m] and radius [m] of each particle in one padded row (x, y, z, r): a copy that
+    // prepare() fills and every drift (integrate.h) rewrites with the new positions, so that the
+    // pair stage's distance test loads a particle with one 32-byte load.
+    std::vector<PaddedVec3> positionRadius;
+
+    /// Refills positionRadius from position and radius (prepare(); after changing either outside
+    /// a step).
+    void refreshPositionRadius()
+    {
+        positionRadius.resize(position.size());
+        for (std::size_t i = 0; i < position.size(); ++i)
+            positionRadius[i] = positionRadiusRow(i);
+    }
+    PaddedVec3 positionRadiusRow(std::size_t i) const
+    {
+        PaddedVec3 row(position[i]);
+        row.pad = radius[i];
+        return row;
+    }
 
     std::size_t size() const { return position.size(); }
 
@@ -60,6 +79,7 @@ struct ParticleStore
         invMass.push_back(1.0 / m);
         invInertia.push_back(1.0 / (0.4 * m * r * r));
         material.push_back(materialId);
+        positionRadius.push_back(positionRadiusRow(position.size() - 1));
         return static_cast<std::uint32_t>(position.size() - 1);
     }
 
@@ -72,6 +92,7 @@ struct ParticleStore
         for (auto* a : {&radius, &mass, &invMass, &invInertia})
             a->reserve(n);
         material.reserve(n);
+        positionRadius.reserve(n);
     }
 };
 

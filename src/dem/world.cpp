@@ -291,6 +291,7 @@ void prepare(World& world)
     world.neighbors.keepRollingHistory = rollingHistory;
     world.wallContacts.keepRollingHistory = rollingHistory;
     rebuildContactLists(world);
+    world.particles.refreshPositionRadius();
     world.prepared = true;
     computeForces(world, 0.0);
 }

@@ -304,10 +304,30 @@ TEST(Determinism, IntegrationLanesMatchScalarLoops)
     EXPECT_EQ(lanesMotion.sinceActiveBuild2, scalarMotion.sinceActiveBuild2);
     EXPECT_GT(scalarMotion.sinceBuild2, 0.0);
 
+    // Both rewrite the (x, y, z, r) rows of the particles they moved, and only those.
+    EXPECT_TRUE(sameBits(lanes.positionRadius, scalar.positionRadius));
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        EXPECT_EQ(lanes.positionRadius[i], lanes.position[i]) << i; // (x, y, z)
+        EXPECT_EQ(lanes.positionRadius[i].pad, lanes.radius[i]) << i;
+    }
+
     EXPECT_TRUE(kickRange(scalar, gravity, dt, begin, end));
     EXPECT_TRUE(kickLanes(lanes, gravity, dt, begin, end));
     EXPECT_TRUE(sameBits(lanes.velocity, scalar.velocity));
     EXPECT_TRUE(sameBits(lanes.angularVelocity, scalar.angularVelocity));
+
+    // The fused closing kick and next kick-drift (advance()): the bits of the two loops in turn.
+    ParticleStore fused = lanes;
+    Motion fusedMotion, twoLoopsMotion;
+    EXPECT_TRUE(kickThenKickDriftLanes(fused, gravity, dt, reference, begin, end, fusedMotion));
+    EXPECT_TRUE(kickThenKickDriftRange(lanes, gravity, dt, reference, begin, end, twoLoopsMotion));
+    EXPECT_TRUE(sameBits(fused.position, lanes.position));
+    EXPECT_TRUE(sameBits(fused.velocity, lanes.velocity));
+    EXPECT_TRUE(sameBits(fused.angularVelocity, lanes.angularVelocity));
+    EXPECT_TRUE(sameBits(fused.positionRadius, lanes.positionRadius));
+    EXPECT_EQ(fusedMotion.sinceBuild2, twoLoopsMotion.sinceBuild2);
+    EXPECT_EQ(fusedMotion.sinceActiveBuild2, twoLoopsMotion.sinceActiveBuild2);
 
     // A non-finite component, inside a group of four and in the part left over.
     for (const std::size_t bad : {std::size_t{9}, std::size_t{20}})
