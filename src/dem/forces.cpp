@@ -922,8 +922,11 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
 }
 
 /// Zeroes the pair sums of particles [begin, end); returns end. Out of line: it runs once a block.
-[[gnu::noinline]] std::size_t zeroSums(const PairSink& sink, std::size_t begin, std::size_t end)
+[[gnu::noinline]] std::size_t zeroSums(const PairSink& sink, bool alreadyZero, std::size_t begin,
+                                       std::size_t end)
 {
+    if (alreadyZero) // (advance()'s fused particle pass zeroed them)
+        return end;
     // (memset: glibc's picks the CPU's widest stores; std::fill of the 32-byte Sums compiled to
     // eight scalar stores a particle here, -fno-tree-slp-vectorize.)
     std::memset(static_cast<void*>(sink.force + begin), 0, (end - begin) * sizeof(PaddedVec3));
@@ -980,7 +983,7 @@ const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, in
 }
 
 /// computePairForces for a world with particles and pair slots.
-void pairForcesOfSlots(World& world, Real dt)
+void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
 {
     ParticleStore& p = world.particles;
     NeighborList& list = world.neighbors;
@@ -1040,7 +1043,7 @@ void pairForcesOfSlots(World& world, Real dt)
             {
                 const std::uint32_t i = first[a], j = second[a];
                 if (i >= zeroedEnd)
-                    zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(i));
+                    zeroedEnd = zeroSums(sink, sumsAreZero, zeroedEnd, blockEndOf(i));
                 const Real touching = radius[i] + radius[j];
                 if (lengthSquared(position[i] - position[j]) < touching * touching)
                 {
@@ -1050,7 +1053,7 @@ void pairForcesOfSlots(World& world, Real dt)
                 else if (mayBeActive[a])
                     list.openCandidate(a);
             }
-            zeroSums(sink, zeroedEnd, endParticle);
+            zeroSums(sink, sumsAreZero, zeroedEnd, endParticle);
             return ContactHealth{worst.ratio, worst.particle, worst.found, touchingCount};
         }
         // One pass: each touching candidate is appended (branch-free) to a batch, which runs when
@@ -1078,9 +1081,9 @@ void pairForcesOfSlots(World& world, Real dt)
             }
             if (a < end && first[a] >= zeroedEnd)
                 // (the batch holds earlier blocks' contacts only)
-                zeroedEnd = zeroSums(sink, zeroedEnd, blockEndOf(first[a]));
+                zeroedEnd = zeroSums(sink, sumsAreZero, zeroedEnd, blockEndOf(first[a]));
         }
-        zeroSums(sink, zeroedEnd, endParticle);
+        zeroSums(sink, sumsAreZero, zeroedEnd, endParticle);
         return ContactHealth{worst.ratio, worst.particle, worst.found, touchingCount};
     };
     if (chunks == 1)
@@ -1121,14 +1124,14 @@ void pairForcesOfSlots(World& world, Real dt)
 
 } // namespace
 
-void computePairForces(World& world, Real dt)
+void computePairForces(World& world, Real dt, bool sumsAreZero)
 {
     world.health.maxOverlapRatio = 0;
     world.health.touchingPairs = 0;
     // (Small, so that it inlines into the step: one ball on a turntable has no pair slots and no
     // sums to fill; addCrossBlockForces zeroes its force and torque.)
     if (world.particles.size() > 0 && world.neighbors.size() > 0)
-        pairForcesOfSlots(world, dt);
+        pairForcesOfSlots(world, dt, sumsAreZero);
 }
 
 const char* laneKernelName()

@@ -13,8 +13,9 @@ namespace veridem::dem
 /// to the sum of its touching pair contacts inside its block (neighbor_list.h), in slot order, and leaves the
 /// cross-block shares in the slots' deferred entries; clears the history of slots that opened. dt [s] is the
 /// step the tangential spring increments over (0 for the initial evaluation). Resets and updates
-/// world.health.
-void computePairForces(World& world, Real dt);
+/// world.health. `sumsAreZero`: every particle's force and torque rows are zero already (advance()'s
+/// fused particle pass zeroes them after its last read), so they are not zeroed again.
+void computePairForces(World& world, Real dt, bool sumsAreZero = false);
 
 /// Stage 4a, particles [begin, end): adds the incoming cross-block contacts to the force and
 /// torque stage 3 left, in slot order (bit-identical for any thread count).

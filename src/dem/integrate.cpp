@@ -213,6 +213,12 @@ VERIDEM_AVX2_TARGET bool kickThenKickDriftLanes(ParticleStore& p, const Vec3& gr
         const Spread inverseMass(lanes::load<Lanes4>(a.invMass + i));
         const Spread halfInverseInertia(half * lanes::load<Lanes4>(a.invInertia + i));
         const PaddedRows force = loadPaddedRows(a.force, i), torque = loadPaddedRows(a.torque, i);
+        // Read for the last time this step: zeroed for the next step's sums (sumsAreZero).
+        for (std::size_t k = i; k < i + 4; ++k)
+        {
+            lanes::store(&p.force[k].x, Lanes4{});
+            lanes::store(&p.torque[k].x, Lanes4{});
+        }
         Lanes4 x[3];
         for (int r = 0; r < 3; ++r)
         {

@@ -175,13 +175,16 @@ inline bool kick(ParticleStore& p, const Vec3& gravity, Real dt, std::size_t beg
 /// kick-drift (kickDriftOne), in one pass: the operations of kickRange followed by kickDriftRange,
 /// so the same bits, with each particle's rows loaded and stored once (advance(), world.cpp).
 /// Folds the displacements from `reference` into `m` as kickDriftRange; returns false if some
-/// state after the kick (x(t), v(t), w(t)) is not finite.
+/// state after the kick (x(t), v(t), w(t)) is not finite. Leaves the range's force and torque rows
+/// zero, ready for the next step's sums (computePairForces, sumsAreZero).
 inline bool kickThenKickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
                                    NeighborList::MotionReference reference, std::size_t begin,
                                    std::size_t end, Motion& m)
 {
     const bool finite = kickRange(p, gravity, dt, begin, end);
     m = kickDriftRange(p, gravity, dt, reference, begin, end, m);
+    for (std::size_t i = begin; i < end; ++i)
+        p.force[i] = p.torque[i] = PaddedVec3{};
     return finite;
 }
 

@@ -247,16 +247,17 @@ VERIDEM_AVX2_TARGET void stepOneParticleAvx2(World& world, Real dt)
 
 /// The stages of step() after the kick-drift (`moved`: the motion it measured): wall motion,
 /// neighbours, pairs, particles. `driftNext` (advance()): the particle pass closes with the next
-/// step's kick-drift too, whose motion it returns (else zero motion).
+/// step's kick-drift too, whose motion it returns (else zero motion), and leaves every force and
+/// torque row zero. `sumsAreZero`: the previous step did so (the pair stage need not zero them).
 Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes, bool driftNext,
-                          StageClock& clock)
+                          bool sumsAreZero, StageClock& clock)
 {
     moveWalls(world.walls, dt); // wall motion to t+dt
     clock.lap(&StepProfile::integration);
     if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
         rebuildContactLists(world);
     clock.lap(&StepProfile::neighbours);
-    computePairForces(world, dt); // 3. pair forces at t+dt, summed within blocks
+    computePairForces(world, dt, sumsAreZero); // 3. pair forces at t+dt, summed within blocks
     clock.lap(&StepProfile::pairForces);
     // 4. cross-block and wall contacts, then v(t+dt) (and, if driftNext, v(t+3dt/2), x(t+2dt))
     const Motion next = finishParticles(world, dt, lanes, driftNext);
@@ -319,7 +320,7 @@ void step(World& world, Real dt)
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
                   lanes);
-    stepAfterKickDrift(world, dt, moved, lanes, false, clock);
+    stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
 }
 
 std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverlapRatio)
@@ -345,7 +346,7 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
     for (std::uint64_t s = 0; s < steps; ++s)
     {
         // Every step but the last closes with the next one's kick-drift (its motion returned).
-        moved = stepAfterKickDrift(world, dt, moved, lanes, s + 1 < steps, clock);
+        moved = stepAfterKickDrift(world, dt, moved, lanes, s + 1 < steps, s > 0, clock);
         if (failed())
             return s + 1;
     }
