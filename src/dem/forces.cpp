@@ -482,6 +482,27 @@ struct LawBatch
     alignas(32) double normalForce[kBatch], ftx[kBatch], fty[kBatch], ftz[kBatch], springX[kBatch],
         springY[kBatch], springZ[kBatch];
     std::uint32_t slot[kBatch], particle[kBatch];
+
+    /// Contact m's inputs: its slot and particle, unit normal, overlap [m], relative contact
+    /// velocity [m/s], effective mass [kg] and stored spring [m].
+    VERIDEM_HOT_INLINE void setInputs(std::size_t m, std::size_t k, std::uint32_t i, const Vec3& normal,
+                                      Real overlapDepth, const Vec3& relativeVelocity, Real effectiveMass,
+                                      const Vec3& spring)
+    {
+        slot[m] = static_cast<std::uint32_t>(k);
+        particle[m] = i;
+        nx[m] = normal.x;
+        ny[m] = normal.y;
+        nz[m] = normal.z;
+        overlap[m] = overlapDepth;
+        rvx[m] = relativeVelocity.x;
+        rvy[m] = relativeVelocity.y;
+        rvz[m] = relativeVelocity.z;
+        mass[m] = effectiveMass;
+        hx[m] = spring.x;
+        hy[m] = spring.y;
+        hz[m] = spring.z;
+    }
 };
 
 /// The contact law of the contacts [0, count) of `b` in lanes (the same law and bits as
@@ -1307,20 +1328,8 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         ++health.touching;
         Vec3 arm;
         const ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
-        const Vec3 spring = list.tangentialSpring[k];
-        b.slot[m] = static_cast<std::uint32_t>(k);
-        b.particle[m] = i;
-        b.nx[m] = in.normal.x;
-        b.ny[m] = in.normal.y;
-        b.nz[m] = in.normal.z;
-        b.overlap[m] = in.overlap;
-        b.rvx[m] = in.relativeVelocity.x;
-        b.rvy[m] = in.relativeVelocity.y;
-        b.rvz[m] = in.relativeVelocity.z;
-        b.mass[m] = in.effectiveMass;
-        b.hx[m] = spring.x;
-        b.hy[m] = spring.y;
-        b.hz[m] = spring.z;
+        b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass,
+                    list.tangentialSpring[k]);
         if (!uniform)
             b.law.set(m, world.pairs(p.material[i], wall.material));
         if (++m == kBatch)
@@ -1451,20 +1460,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         const Vec3 surfaceVelocity =
             frame.velocity + cross(frame.angularVelocity, midStepContactPoint - frame.axis);
         const Vec3 relativeVelocity = v + cross(w, arm) - surfaceVelocity;
-        const Vec3 h = spring[k];
-        b.slot[m] = static_cast<std::uint32_t>(k);
-        b.particle[m] = i;
-        b.nx[m] = frame.normal.x;
-        b.ny[m] = frame.normal.y;
-        b.nz[m] = frame.normal.z;
-        b.overlap[m] = overlap;
-        b.rvx[m] = relativeVelocity.x;
-        b.rvy[m] = relativeVelocity.y;
-        b.rvz[m] = relativeVelocity.z;
-        b.mass[m] = mass[i];
-        b.hx[m] = h.x;
-        b.hy[m] = h.y;
-        b.hz[m] = h.z;
+        b.setInputs(m, k, i, frame.normal, overlap, relativeVelocity, mass[i], spring[k]);
         if (!uniform)
             b.law.set(m, world.pairs(p.material[i], frame.material));
         if (++m == kBatch)
