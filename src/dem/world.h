@@ -43,10 +43,11 @@ struct ContactHealth
 struct StepProfile
 {
     bool enabled = false;
-    double integration = 0;  // kick-drift, wall motion
+    double integration = 0;  // kick-drift (in advance(), only its first step's), wall motion
     double neighbours = 0;   // rebuild test + Verlet list rebuild + history merge
     double pairForces = 0;   // pair contacts, summed within blocks (stage 3)
-    double particlePass = 0; // cross-block sums, wall contacts, kick (stage 4)
+    double particlePass = 0; // cross-block sums, wall contacts, kick (stage 4; in advance(), also the
+                             // next step's kick-drift)
 };
 
 /// Which thread evaluates which block of the pair stage (block_partition.h), balanced by touching
