@@ -238,8 +238,8 @@ int run(int argc, char** argv)
     if (o.probeOnly)
     {
         const bench::CoreProbe probe = bench::probeCore();
-        std::printf("core probe: %.2f GHz, %.2f adds/cycle (~3.7: a whole Zen 3 core)\n", probe.clockGHz,
-                    probe.addsPerCycle);
+        std::printf("core probe: %.2f GHz, %.2f adds/cycle (%s)\n", probe.clockGHz, probe.addsPerCycle,
+                    bench::kWholeCoreAdds);
         return 0;
     }
 #ifdef _OPENMP
@@ -340,9 +340,9 @@ int run(int argc, char** argv)
         // tenant's hardware thread on the same core slows a run by up to ~1.5x at the same clock.
         if (probeBefore.addsPerCycle > 0)
             std::printf("  core probe (main thread): before %.2f GHz, %.2f adds/cycle; after %.2f GHz, %.2f "
-                        "adds/cycle (~3.7: a whole Zen 3 core)\n",
+                        "adds/cycle (%s)\n",
                         probeBefore.clockGHz, probeBefore.addsPerCycle, probeAfter.clockGHz,
-                        probeAfter.addsPerCycle);
+                        probeAfter.addsPerCycle, bench::kWholeCoreAdds);
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
                     peak / 1e6, peak / static_cast<double>(n),
                     (peak - residentBefore) / static_cast<double>(n));
