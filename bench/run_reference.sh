@@ -16,9 +16,10 @@
 # in 100-step runs here, so each round also prints the ratio of the two codes' best 100-step
 # windows: what each code does in the quietest moments of the run (on a dedicated machine).
 # Every veridem run prints a core probe before and after its timed loop (bench/core_probe.h: the
-# integer adds per cycle this thread gets, ~3.7 on a whole Zen 3 core (~5 on Zen 5), 2.2-2.8 when another
-# tenant's hardware thread shares it); `veridem_bench --core-probe` is run around each LAMMPS and
-# LIGGGHTS run as well, so that each figure says which state of the machine it was measured in.
+# integer adds per cycle this thread gets, ~3.7 on a whole Zen 3 core (~5 on Zen 5), 2.2-2.8 when
+# another tenant's hardware thread shares it); `veridem_bench --core-probe` is run around each
+# LAMMPS and LIGGGHTS run as well, so that each figure says which state of the machine it was
+# measured in.
 # OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
 # default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
 # every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
