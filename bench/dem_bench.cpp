@@ -397,6 +397,29 @@ int run(int argc, char** argv)
             share("pair forces", p.pairForces);
             share("cross-block, walls, kicks", p.particlePass);
             share("walls moved, 1st drift", p.integration);
+            if (o.threads > 1)
+            {
+                // Each thread's busy time in the two parallel stages (StepProfile): the balance,
+                // and the stage's wall time beyond its busiest thread (the serial work before the
+                // region, such as refreshing the candidate sub-list, and entering and leaving it).
+                auto perThread =
+                    [&](const char* name, const std::array<double, StepProfile::kThreads>& busy, double wall)
+                {
+                    const double perStep = 1e9 / (static_cast<double>(n) * static_cast<double>(o.steps));
+                    std::printf("    %-25s", name);
+                    double busiest = 0;
+                    for (int t = 0; t < std::min(o.threads, StepProfile::kThreads); ++t)
+                    {
+                        std::printf(" %6.1f", perStep * busy[static_cast<std::size_t>(t)]);
+                        busiest = std::max(busiest, busy[static_cast<std::size_t>(t)]);
+                    }
+                    std::printf("  ns/particle-step by thread (stage wall time %.1f)\n", perStep * wall);
+                };
+                std::printf(
+                    "  busy time by thread (their sum is the work; the stage waits for the busiest):\n");
+                perThread("pair forces", p.pairBusy, p.pairForces);
+                perThread("cross-block, walls, kicks", p.particlePassBusy, p.particlePass);
+            }
         }
         std::fflush(stdout);
     }

@@ -1124,6 +1124,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
         parallelChunks(static_cast<std::size_t>(chunks), chunks,
                        [&](int chunk, std::size_t, std::size_t)
                        {
+                           const ThreadBusyTimer busy(world.profile, world.profile.pairBusy, chunk);
                            const auto evaluate = [&](std::uint32_t b) {
                                health[b] = pairRun(BlockRun{b, b + 1, chunk});
                            };

@@ -168,7 +168,10 @@ Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
         Motion moved[64];
         parallelChunks(n, chunks,
                        [&](int c, std::size_t begin, std::size_t end)
-                       { walls[c] = finishRange(world, dt, begin, end, lanes, finite[c], drift, moved[c]); });
+                       {
+                           const ThreadBusyTimer busy(world.profile, world.profile.particlePassBusy, c);
+                           walls[c] = finishRange(world, dt, begin, end, lanes, finite[c], drift, moved[c]);
+                       });
         mergeWallHealth(world.health, walls, chunks);
         world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
         for (int c = 0; c < chunks; ++c) // a maximum: the same for any chunking

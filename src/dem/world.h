@@ -9,6 +9,8 @@
 #include "dem/wall_contacts.h"
 #include "dem/walls/wall.h"
 
+#include <array>
+#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -48,6 +50,37 @@ struct StepProfile
     double pairForces = 0;   // pair contacts, summed within blocks (stage 3)
     double particlePass = 0; // cross-block sums, wall contacts, kick (stage 4; in advance(), also the
                              // next step's kick-drift)
+    // With more than one thread: each thread's busy time in the two parallel stages [s], by thread
+    // (chunk) index; threads beyond kThreads are not recorded. A stage's wall time above its
+    // busiest thread's is its serial part and the cost of entering and leaving the parallel
+    // region; threads far apart in busy time mean one ran slower (a shared core) or had more work.
+    static constexpr int kThreads = 8;
+    std::array<double, kThreads> pairBusy{}, particlePassBusy{};
+};
+
+/// Adds the wall-clock time of its scope to `busy[thread]` if the profile is enabled (a thread's
+/// part of a parallel stage; see StepProfile).
+class ThreadBusyTimer
+{
+  public:
+    ThreadBusyTimer(const StepProfile& profile, std::array<double, StepProfile::kThreads>& busy, int thread)
+        : slot_(profile.enabled && thread < StepProfile::kThreads ? &busy[static_cast<std::size_t>(thread)]
+                                                                  : nullptr)
+    {
+        if (slot_)
+            start_ = std::chrono::steady_clock::now();
+    }
+    ~ThreadBusyTimer()
+    {
+        if (slot_)
+            *slot_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+    ThreadBusyTimer(const ThreadBusyTimer&) = delete;
+    ThreadBusyTimer& operator=(const ThreadBusyTimer&) = delete;
+
+  private:
+    double* slot_;
+    std::chrono::steady_clock::time_point start_;
 };
 
 /// Which thread evaluates which block of the pair stage (block_partition.h), balanced by touching
