@@ -366,11 +366,11 @@ int run(int argc, char** argv)
                         static_cast<double>(std::max<std::size_t>(world.neighbors.size(), 1)),
                     NeighborList::kBlockParticles);
         if (world.pairSchedule.chunks > 1)
-            std::printf("  pair stage on %d threads: the busiest has %.1f %% of the weighted candidates; "
-                        "%.2f blocks a step taken from another thread's run\n",
-                        world.pairSchedule.chunks, 100.0 * world.pairSchedule.heaviestShare,
-                        static_cast<double>(world.pairSchedule.blocksTaken) /
-                            static_cast<double>(std::max<std::uint64_t>(world.stepCount, 1)));
+            std::printf(
+                "  pair stage on %d threads: the busiest has %.1f %% of the weighted candidates; the split "
+                "moved %llu times after the threads' measured speeds\n",
+                world.pairSchedule.chunks, 100.0 * world.pairSchedule.heaviestShare,
+                static_cast<unsigned long long>(world.pairSchedule.moves));
         std::printf("  touching candidates %zu (%.2f per particle, inner skin %.3g m), rebuilt %zu times\n",
                     world.neighbors.activeSlots.size(),
                     static_cast<double>(world.neighbors.activeSlots.size()) / static_cast<double>(n),

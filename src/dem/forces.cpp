@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -992,8 +993,12 @@ const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, in
                 w += (kCrossBlockWeight - 1) * (list.activeDeferred[a] != NeighborList::kInBlock);
             weight[b] = w;
         }
-        partitionBlocks(weight.data(), blocks, chunks, s.runs);
+        if (s.speed.size() != static_cast<std::size_t>(chunks))
+            s.speed.assign(static_cast<std::size_t>(chunks), 0.0); // other threads: measure anew
+        const bool measured = std::all_of(s.speed.begin(), s.speed.end(), [](double v) { return v > 0; });
+        partitionBlocks(weight.data(), blocks, chunks, s.runs, measured ? s.speed.data() : nullptr);
         s.heaviestShare = heaviestShare(weight.data(), s.runs, chunks);
+        s.weight = std::move(weight);
         s.runHealth.assign(blocks, ContactHealth{});
         s.chunks = chunks;
         s.subListRebuilds = list.activeRebuildCount();
@@ -1001,6 +1006,53 @@ const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, in
         s.particles = n;
     }
     return s.runs;
+}
+
+/// After a parallel pair stage: folds each thread's rate on its own run (its runs' weight over
+/// `seconds[c]`, the time it took) into the running mean of its speed, and moves the split if
+/// the speeds predict the stage at least 3 % shorter (partitionBlocks with the speeds as shares).
+/// The margin keeps the boundary from moving back and forth between two block edges as the
+/// measured speeds jitter: each move carries a block's rows (~200 KB) to the other core once.
+void adaptSchedule(PairSchedule& s, const double* seconds, int chunks)
+{
+    constexpr double kMix = 1.0 / 16; // weight of the newest step in the running mean
+    constexpr double kMargin = 0.97;  // move only for a stage predicted this much shorter
+    std::uint64_t runWeight[kMaxChunks] = {};
+    for (const BlockRun& r : s.runs)
+        for (std::uint32_t b = r.first; b < r.end; ++b)
+            runWeight[r.chunk] += s.weight[b];
+    bool measured = true;
+    for (int c = 0; c < chunks; ++c)
+    {
+        double& speed = s.speed[static_cast<std::size_t>(c)];
+        if (seconds[c] > 0 && runWeight[c] > 0)
+        {
+            const double rate = static_cast<double>(runWeight[c]) / seconds[c];
+            speed = speed > 0 ? speed + kMix * (rate - speed) : rate;
+        }
+        measured = measured && speed > 0;
+    }
+    if (!measured)
+        return;
+    // The stage takes as long as its slowest thread: max over threads of weight / speed.
+    const auto predicted = [&](const std::vector<BlockRun>& runs)
+    {
+        std::uint64_t load[kMaxChunks] = {};
+        for (const BlockRun& r : runs)
+            for (std::uint32_t b = r.first; b < r.end; ++b)
+                load[r.chunk] += s.weight[b];
+        double longest = 0;
+        for (int c = 0; c < chunks; ++c)
+            longest = std::max(longest, static_cast<double>(load[c]) / s.speed[static_cast<std::size_t>(c)]);
+        return longest;
+    };
+    partitionBlocks(s.weight.data(), s.weight.size(), chunks, s.proposal, s.speed.data());
+    if (predicted(s.proposal) < kMargin * predicted(s.runs))
+    {
+        std::swap(s.runs, s.proposal);
+        s.heaviestShare = heaviestShare(s.weight.data(), s.runs, chunks);
+        ++s.moves;
+    }
 }
 
 /// computePairForces for a world with particles and pair slots.
@@ -1114,32 +1166,27 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     }
     else
     {
-        // Each thread takes its run's blocks from the front, then the blocks other threads have
-        // not reached yet from the back of their runs (block_partition.h): which thread evaluates
-        // a block changes nothing in the results.
-        BlockRange remaining[kMaxChunks];
+        // Each thread evaluates its own run's blocks, timed for adaptSchedule.
+        const BlockRun* runOf[kMaxChunks] = {};
         for (const BlockRun& run : runs)
-            remaining[run.chunk].reset(run.first, run.end);
-        std::size_t taken[kMaxChunks] = {}; // blocks taken from other threads' runs
-        parallelChunks(static_cast<std::size_t>(chunks), chunks,
-                       [&](int chunk, std::size_t, std::size_t)
-                       {
-                           const ThreadBusyTimer busy(world.profile, world.profile.pairBusy, chunk);
-                           const auto evaluate = [&](std::uint32_t b) {
-                               health[b] = pairRun(BlockRun{b, b + 1, chunk});
-                           };
-                           while (const std::optional<std::uint32_t> b = remaining[chunk].takeFront())
-                               evaluate(*b);
-                           for (int k = 1; k < chunks; ++k)
-                               while (const std::optional<std::uint32_t> b =
-                                          remaining[(chunk + k) % chunks].takeBack())
-                               {
-                                   evaluate(*b);
-                                   ++taken[chunk];
-                               }
-                       });
-        for (int c = 0; c < chunks; ++c)
-            world.pairSchedule.blocksTaken += taken[c];
+            runOf[run.chunk] = &run;
+        double seconds[kMaxChunks] = {};
+        parallelChunks(
+            static_cast<std::size_t>(chunks), chunks,
+            [&](int chunk, std::size_t, std::size_t)
+            {
+                const ThreadBusyTimer busy(world.profile, world.profile.pairBusy, chunk);
+                const BlockRun* const run = runOf[chunk];
+                if (!run)
+                    return;
+                const auto start = std::chrono::steady_clock::now();
+                for (std::uint32_t b = run->first; b < run->end; ++b)
+                    health[b] = pairRun(BlockRun{b, b + 1, chunk});
+                seconds[chunk] =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            });
+        if (world.pairSchedule.adapt)
+            adaptSchedule(world.pairSchedule, seconds, chunks);
     }
     foldHealth(world.health, health, static_cast<int>(blocks), world.health.touchingPairs);
 }

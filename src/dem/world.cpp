@@ -136,6 +136,52 @@ ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t 
     return health;
 }
 
+/// The parts of stage 4: edge[c] .. edge[c + 1] for thread c (edge[chunks] = n), in proportion to
+/// the threads' measured speeds, each edge a multiple of 64 particles (so that a jitter of the
+/// speeds does not move rows between cores every step), or equal parts until all are measured.
+void passEdges(PassSchedule& s, std::size_t n, int chunks, std::size_t* edge)
+{
+    if (s.speed.size() != static_cast<std::size_t>(chunks))
+        s.speed.assign(static_cast<std::size_t>(chunks), 0.0);
+    double total = 0;
+    for (double v : s.speed)
+        total = v > 0 && total >= 0 ? total + v : -1; // -1: some thread not measured yet
+    constexpr std::size_t kGrain = 64;
+    double before = 0;
+    edge[0] = 0;
+    for (int c = 1; c <= chunks; ++c)
+    {
+        if (c == chunks)
+            edge[c] = n;
+        else if (total > 0)
+        {
+            before += s.speed[static_cast<std::size_t>(c - 1)];
+            const auto at = static_cast<std::size_t>(std::llround(static_cast<double>(n) * before / total /
+                                                                  static_cast<double>(kGrain))) *
+                            kGrain;
+            edge[c] = std::clamp(at, edge[c - 1], n);
+        }
+        else
+            edge[c] = chunkBegin(n, chunks, c);
+    }
+}
+
+/// Folds each thread's stage-4 rate (its particles over its time `seconds[c]`) into the running
+/// mean of its speed.
+void updatePassSpeeds(PassSchedule& s, const std::size_t* edge, const double* seconds, int chunks)
+{
+    constexpr double kMix = 1.0 / 16; // weight of the newest step in the running mean
+    for (int c = 0; c < chunks; ++c)
+    {
+        const std::size_t count = edge[c + 1] - edge[c];
+        if (count == 0 || seconds[c] <= 0)
+            continue;
+        const double rate = static_cast<double>(count) / seconds[c];
+        double& speed = s.speed[static_cast<std::size_t>(c)];
+        speed = speed > 0 ? speed + kMix * (rate - speed) : rate;
+    }
+}
+
 /// Stage 4, one pass over the particles, in chunks (one per thread); health is combined in
 /// chunk order. `lanes`: the kick runs in AVX2 lanes. `driftNext` (advance()): the pass also runs
 /// the next step's kick-drift and returns its motion (else zero motion).
@@ -166,12 +212,22 @@ Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
         ContactHealth walls[64]{}; // (zeroed: GCC cannot see that chunks <= 64 entries are written)
         bool finite[64]{};
         Motion moved[64];
-        parallelChunks(n, chunks,
-                       [&](int c, std::size_t begin, std::size_t end)
-                       {
-                           const ThreadBusyTimer busy(world.profile, world.profile.particlePassBusy, c);
-                           walls[c] = finishRange(world, dt, begin, end, lanes, finite[c], drift, moved[c]);
-                       });
+        // Each thread finishes a contiguous part of the particles, in proportion to its measured
+        // rate (PassSchedule; any split gives the same bits).
+        std::size_t edge[65];
+        passEdges(world.passSchedule, n, chunks, edge);
+        double seconds[64] = {};
+        parallelChunks(
+            static_cast<std::size_t>(chunks), chunks,
+            [&](int c, std::size_t, std::size_t)
+            {
+                const ThreadBusyTimer busy(world.profile, world.profile.particlePassBusy, c);
+                const auto start = std::chrono::steady_clock::now();
+                walls[c] = finishRange(world, dt, edge[c], edge[c + 1], lanes, finite[c], drift, moved[c]);
+                seconds[c] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            });
+        if (world.passSchedule.adapt)
+            updatePassSpeeds(world.passSchedule, edge, seconds, chunks);
         mergeWallHealth(world.health, walls, chunks);
         world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
         for (int c = 0; c < chunks; ++c) // a maximum: the same for any chunking

@@ -84,8 +84,9 @@ class ThreadBusyTimer
 };
 
 /// Which thread evaluates which block of the pair stage (block_partition.h), balanced by touching
-/// candidates, a cross-block one counting three (forces.cpp, scheduleBlocks); recomputed when the
-/// candidate sub-list, the slots or the thread count change.
+/// candidates, a cross-block one counting three, in proportion to each thread's measured speed
+/// (forces.cpp, scheduleBlocks and adaptSchedule); recomputed when the candidate sub-list, the
+/// slots or the thread count change, and moved when the speeds predict a shorter stage.
 struct PairSchedule
 {
     std::vector<BlockRun> runs;
@@ -93,7 +94,25 @@ struct PairSchedule
     std::size_t subListRebuilds = 0, slotRebuilds = 0, particles = 0; // what it was made for
     double heaviestShare = 0;             // the busiest thread's share of the candidates [-]
     std::vector<ContactHealth> runHealth; // per block, written by the thread that evaluated it
-    std::uint64_t blocksTaken = 0;        // blocks evaluated by a thread other than their run's, in all
+    std::vector<std::uint64_t> weight;    // per block: its weight (touching candidates) [-]
+    std::vector<double> speed;            // per thread: weight per second on its run, a running mean
+                                          // over ~16 steps [1/s] (0: not measured yet)
+    std::vector<BlockRun> proposal;       // adaptSchedule's work space (no allocation per step)
+    std::uint64_t moves = 0;              // times the split moved after the speeds, in all
+    bool adapt = true;                    // false: the speeds are not measured (a split by weight
+                                          // alone, or by `speed` if set; tests)
+};
+
+/// How stage 4 (cross-block sums, walls, kicks: world.cpp, finishParticles) shares the particles
+/// among threads: in contiguous parts in proportion to each thread's measured rate there
+/// (equal parts until every thread has been timed). Its work per particle differs from the pair
+/// stage's (walls, cross-block entries), so it is balanced on its own.
+struct PassSchedule
+{
+    std::vector<double> speed; // per thread: particles per second in stage 4, a running mean over
+                               // ~16 steps [1/s] (0: not measured yet)
+    bool adapt = true;         // false: the speeds are not measured (equal parts, or by `speed` if
+                               // set; tests)
 };
 
 struct World
@@ -110,6 +129,7 @@ struct World
     StepHealth health;
     StepProfile profile;
     PairSchedule pairSchedule;
+    PassSchedule passSchedule;
     bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
                                       // the scalar path, which false selects; forces.cpp)
     bool prepared = false;

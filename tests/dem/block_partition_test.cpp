@@ -1,12 +1,12 @@
 // The pair stage's blocks are shared among threads in contiguous ranges that cover every block
-// once, in order, with each boundary at the block edge nearest to an equal share of the weight.
+// once, in order, with each boundary at the block edge nearest to an equal share of the weight, or
+// to the threads' shares when they are given (their measured speeds).
 #include "dem/block_partition.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <numeric>
-#include <thread>
 #include <vector>
 
 using namespace veridem::dem;
@@ -91,49 +91,23 @@ TEST(BlockPartition, MoreChunksThanBlocksLeavesSomeEmpty)
     EXPECT_LE(runs.size(), 2u);
 }
 
-TEST(BlockRange, FrontAndBackTakeEachBlockOnce)
+TEST(BlockPartition, SharesFollowTheThreadsSpeeds)
 {
-    BlockRange range;
-    range.reset(3, 9);
-    std::vector<std::uint32_t> taken;
-    for (int k = 0; k < 10; ++k) // alternating ends: 3, 8, 4, 7, 5, 6, then nothing
-        if (const auto b = (k % 2 == 0) ? range.takeFront() : range.takeBack())
-            taken.push_back(*b);
-    EXPECT_EQ(taken, (std::vector<std::uint32_t>{3, 8, 4, 7, 5, 6}));
-    EXPECT_FALSE(range.takeFront());
-    EXPECT_FALSE(range.takeBack());
-    range.reset(5, 5); // an empty run
-    EXPECT_FALSE(range.takeFront());
-}
-
-TEST(BlockRange, TwoThreadsTakeEachBlockExactlyOnce)
-{
-    // One thread from the front, one from the back, racing on the same range: every block is
-    // taken by exactly one of them, the front's blocks ascending and the back's descending.
-    constexpr std::uint32_t kBlocks = 20000;
-    for (int round = 0; round < 20; ++round)
-    {
-        BlockRange range;
-        range.reset(0, kBlocks);
-        std::vector<std::uint32_t> front, back;
-        std::thread owner(
-            [&]
-            {
-                while (const auto b = range.takeFront())
-                    front.push_back(*b);
-            });
-        std::thread helper(
-            [&]
-            {
-                while (const auto b = range.takeBack())
-                    back.push_back(*b);
-            });
-        owner.join();
-        helper.join();
-        ASSERT_EQ(front.size() + back.size(), kBlocks);
-        for (std::size_t k = 0; k < front.size(); ++k)
-            ASSERT_EQ(front[k], k);
-        for (std::size_t k = 0; k < back.size(); ++k)
-            ASSERT_EQ(back[k], kBlocks - 1 - k);
-    }
+    // A thread twice as fast gets twice the weight: with 30 equal blocks and shares 1 : 2, the
+    // boundary is at block 10 (a third), each boundary within one block of its share.
+    const std::vector<std::uint64_t> w(30, 100);
+    std::vector<BlockRun> runs;
+    const double share[2] = {1.0, 2.0};
+    partitionBlocks(w.data(), w.size(), 2, runs, share);
+    expectCover(runs, w.size(), 2);
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].end, 10u);
+    // Equal shares give the equal split.
+    const double equal[3] = {5.0, 5.0, 5.0};
+    std::vector<BlockRun> byShare, byDefault;
+    partitionBlocks(w.data(), w.size(), 3, byShare, equal);
+    partitionBlocks(w.data(), w.size(), 3, byDefault);
+    ASSERT_EQ(byShare.size(), byDefault.size());
+    for (std::size_t r = 0; r < byShare.size(); ++r)
+        EXPECT_EQ(byShare[r].end, byDefault[r].end);
 }

@@ -63,7 +63,9 @@ World jostlingBox(bool sorted, int side = 13)
     return world;
 }
 
-World runOn(int threads, int steps, int side = 13)
+/// `adapt`: the threads' shares follow their measured speeds (the default), else the split is by
+/// weight alone (reproducible). `speeds`: the speeds to start from (one per thread), if given.
+World runOn(int threads, int steps, int side = 13, bool adapt = true, std::vector<double> speeds = {})
 {
 #ifdef _OPENMP
     const int previous = omp_get_max_threads();
@@ -72,6 +74,10 @@ World runOn(int threads, int steps, int side = 13)
     (void)threads;
 #endif
     World world = jostlingBox(true, side);
+    world.pairSchedule.adapt = adapt;
+    world.passSchedule.adapt = adapt;
+    world.pairSchedule.speed = speeds;
+    world.passSchedule.speed = speeds;
     for (int s = 0; s < steps; ++s)
         step(world, 1e-5);
 #ifdef _OPENMP
@@ -102,8 +108,10 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBitsAfter1000Steps)
 }
 
 /// Blocks are independent (block_partition.h), so any split of them among threads gives the same
-/// bits. A 17^3 box has five blocks (four of 1024 particles and one of 817): two threads split them
-/// 2 + 3, three threads 1 + 2 + 2 (300 steps: contacts open, close and slide by then).
+/// bits. A 17^3 box has five blocks (four of 1024 particles and one of 817): with the split by
+/// weight alone, two threads split them 2 + 3, three threads 1 + 2 + 2; with the splits following
+/// the threads' speeds, starting from speeds of 1 : 4, the split moves as the threads are timed
+/// (300 steps: contacts open, close and slide by then).
 TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
 {
 #ifndef _OPENMP
@@ -111,8 +119,9 @@ TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
 #endif
     constexpr int side = 17, steps = 300;
     World one = runOn(1, steps, side);
-    World two = runOn(2, steps, side);
-    World three = runOn(3, steps, side);
+    World two = runOn(2, steps, side, false);
+    World three = runOn(3, steps, side, false);
+    World skewed = runOn(2, steps, side, true, {1e6, 4e6});
     ASSERT_EQ((one.particles.size() + NeighborList::kBlockParticles - 1) / NeighborList::kBlockParticles, 5u);
     ASSERT_EQ(two.pairSchedule.runs.size(), 2u);
     ASSERT_EQ(three.pairSchedule.runs.size(), 3u);
@@ -120,7 +129,7 @@ TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
         << two.pairSchedule.runs[0].end << " " << three.pairSchedule.runs[0].end << " "
         << three.pairSchedule.runs[1].end;
     EXPECT_GT(one.health.touchingPairs, 0u);
-    for (const World* w : {&two, &three})
+    for (const World* w : {&two, &three, &skewed})
     {
         EXPECT_TRUE(sameBits(one.particles.position, w->particles.position));
         EXPECT_TRUE(sameBits(one.particles.velocity, w->particles.velocity));
