@@ -8,3 +8,11 @@
 #else
 #define VERIDEM_HOT_INLINE inline
 #endif
+
+// The same for a lambda (after its parameter list): a lambda inlined into a function of another
+// instruction set must be always_inline to be compiled for that set.
+#if defined(__GNUC__)
+#define VERIDEM_INLINE_LAMBDA __attribute__((always_inline))
+#else
+#define VERIDEM_INLINE_LAMBDA
+#endif

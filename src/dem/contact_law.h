@@ -1,40 +1,145 @@
-// The contact law: normal force, then tangential force capped by it, then rolling torque capped by
-// it, in that fixed visible order. The same function serves particle pairs and particle-wall
-// contacts: a wall is a partner of infinite mass with a prescribed velocity and angular velocity.
+// The contact law, written once: normal force, then tangential force capped by it, then rolling
+// torque capped by it, in that fixed visible order. One template over the number type T (double
+// for the scalar path, a vector of lanes for the batched kernels: dem/lanes.h) and over the pair's
+// models (LawModel, chosen once per pair-table entry), so every width gives the same bits by
+// construction. The same function serves particle pairs and particle-wall contacts: a wall is a
+// partner of infinite mass with a prescribed velocity and angular velocity.
 #pragma once
 
 #include "core/hot.h"
 #include "core/vec3.h"
+#include "dem/lanes.h"
 #include "dem/materials.h"
 #include "dem/models/normal.h"
 #include "dem/models/rolling.h"
 #include "dem/models/tangential.h"
 
-#include <cmath>
 #include <vector>
 
 namespace veridem::dem
 {
 
-/// Geometry and kinematics of one contact, as seen by particle i.
-struct ContactInput
+/// The models of a pair, as compile-time parameters of the law.
+template <NormalModel N, RollingModel R> struct LawModel
 {
-    Vec3 normal;                  // unit, from the partner towards particle i
-    Real overlap = 0;             // delta > 0 [m]
-    Vec3 relativeVelocity;        // contact-point velocity of i minus that of the partner [m/s]
-    Vec3 relativeAngularVelocity; // w_i - w_partner [rad/s]
-    Real effectiveMass = 0;       // m* [kg]
-    Real effectiveRadius = 0;     // R* [m] (Hertz, and R_r for dimensionless rolling friction)
-    Real rollingInertia = 0;      // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
-    Real spinInertia = 0;         // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
+    static constexpr NormalModel normal = N;
+    static constexpr RollingModel rolling = R;
 };
 
-/// Per-contact history carried from step to step.
-struct ContactHistory
+/// Calls f(LawModel<...>{}) for the models of p (one switch per call, outside the law).
+template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairParams& p, F&& f)
 {
-    Vec3 tangentialSpring; // xi [m]
-    Vec3 rollingSpring;    // EPSD elastic torque [N m]
+    const auto rolling = [&]<NormalModel N>() -> decltype(auto)
+    {
+        switch (p.rollingModel)
+        {
+        case RollingModel::ConstantTorque:
+            return f(LawModel<N, RollingModel::ConstantTorque>{});
+        case RollingModel::Epsd:
+            return f(LawModel<N, RollingModel::Epsd>{});
+        default:
+            return f(LawModel<N, RollingModel::None>{});
+        }
+    };
+    if (p.normalModel == NormalModel::Hertz)
+        return rolling.template operator()<NormalModel::Hertz>();
+    return rolling.template operator()<NormalModel::Linear>();
+}
+
+/// The number of model combinations (LawModel) and each one's index: normal * 3 + rolling.
+inline constexpr unsigned kLawModels = 6;
+inline unsigned lawModelIndex(const PairParams& p)
+{
+    return static_cast<unsigned>(p.normalModel) * 3 + static_cast<unsigned>(p.rollingModel);
+}
+
+/// Calls f(LawModel<...>{}, index) for every model whose bit `index` is set in `mask`.
+template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
+{
+    using N = NormalModel;
+    using R = RollingModel;
+    if (mask & 1u)
+        f(LawModel<N::Linear, R::None>{}, 0u);
+    if (mask & 2u)
+        f(LawModel<N::Linear, R::ConstantTorque>{}, 1u);
+    if (mask & 4u)
+        f(LawModel<N::Linear, R::Epsd>{}, 2u);
+    if (mask & 8u)
+        f(LawModel<N::Hertz, R::None>{}, 3u);
+    if (mask & 16u)
+        f(LawModel<N::Hertz, R::ConstantTorque>{}, 4u);
+    if (mask & 32u)
+        f(LawModel<N::Hertz, R::Epsd>{}, 5u);
+}
+
+/// What the law reads beyond the linear normal and tangential model.
+struct ExtraInputs
+{
+    bool effectiveRadius, spinInertia, rollingInertia, angularVelocity;
 };
+inline ExtraInputs extraInputsFor(const PairParams& p)
+{
+    const bool rolling = p.rollingModel != RollingModel::None;
+    return {p.normalModel == NormalModel::Hertz || rolling, p.rollingModel == RollingModel::ConstantTorque,
+            p.rollingModel == RollingModel::Epsd, rolling};
+}
+
+/// The pair parameters as the law reads them (one value per lane).
+template <class T> struct LawParamsOf
+{
+    T kn;             // [N/m] (linear)
+    T ktRatio;        // kt/kn [-] (linear)
+    T modulus;        // E* [Pa] (Hertz)
+    T shearModulus;   // G* [Pa] (Hertz-Mindlin)
+    T dampingRate;    // gamma_n [1/s] if >= 0 (etaN = gamma_n m*), else damping from restitution
+    T dampingFactor;  // etaN / sqrt(m* kn): 2 zeta (linear) or 2 sqrt(5/6) beta (Hertz) [-]
+    T etaRatio;       // etaT / etaN [-]
+    T mu;             // [-]
+    T rollingLength;  // muR as a length [m]
+    T rollingDimless; // muR' [-] (muR = rollingLength + muR' R*)
+    T rollingDamping; // EPSD etaR [-]
+    T rollingTwist;   // 1: the rolling torque also opposes twist about the normal; 0: not [-]
+};
+using LawParams = LawParamsOf<Real>;
+
+/// The law's parameters of a pair.
+inline LawParams lawParams(const PairParams& p)
+{
+    return {p.kn,
+            p.ktRatio,
+            p.effectiveModulus,
+            p.effectiveShearModulus,
+            p.dampingRate,
+            p.normalModel == NormalModel::Hertz ? hertzDampingFactor(p.hertzBeta) : 2.0 * p.dampingRatio,
+            p.tangentialDampingRatio,
+            p.mu,
+            p.rollingLength,
+            p.rollingDimensionless,
+            p.rollingDampingRatio,
+            p.rollingTwist ? 1.0 : 0.0};
+}
+
+/// Geometry and kinematics of one contact, as seen by particle i.
+template <class T> struct ContactInputOf
+{
+    lanes::Vec3Of<T> normal{};                  // unit, from the partner towards particle i
+    T overlap{};                                // delta > 0 [m]
+    lanes::Vec3Of<T> relativeVelocity{};        // contact-point velocity of i minus the partner's [m/s]
+    lanes::Vec3Of<T> relativeAngularVelocity{}; // w_i - w_partner [rad/s]
+    T effectiveMass{};                          // m* [kg]
+    T effectiveRadius{};                        // R* [m] (Hertz, and R_r for dimensionless rolling friction)
+    T rollingInertia{}; // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
+    T spinInertia{};    // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
+};
+using ContactInput = ContactInputOf<Real>;
+
+/// Per-contact history carried from step to step.
+template <class T> struct ContactHistoryOf
+{
+    lanes::Vec3Of<T> tangentialSpring{}; // xi [m]
+    lanes::Vec3Of<T> rollingSpring{};    // EPSD elastic torque [N m]
+};
+using ContactHistory = ContactHistoryOf<Real>;
 
 /// Entry k of history kept as parallel arrays (the contact lists'): the tangential spring, and
 /// the rolling spring only if `keepRolling` (an EPSD rolling model is in use; else it is empty).
@@ -51,109 +156,148 @@ inline void storeHistoryAt(std::vector<Vec3>& tangential, std::vector<Vec3>& rol
         rolling[k] = h.rollingSpring;
 }
 
-struct ContactOutput
+template <class T> struct ContactOutputOf
 {
-    Vec3 force;           // total force on i [N] (normal + tangential)
-    Vec3 tangentialForce; // its tangential part [N] (its torque lever is applied by the caller)
-    Vec3 rollingTorque;   // rolling/twisting resistance torque on i [N m]
-    Real normalForce = 0; // signed Fn [N] (> 0 repulsive; may be slightly < 0: no clipping)
-    bool sliding = false;
+    lanes::Vec3Of<T> force;           // total force on i [N] (normal + tangential)
+    lanes::Vec3Of<T> tangentialForce; // its tangential part [N] (its torque lever is applied by the caller)
+    lanes::Vec3Of<T> rollingTorque;   // rolling/twisting resistance torque on i [N m]
+    T normalForce{};                  // signed Fn [N] (> 0 repulsive; may be slightly < 0: no clipping)
+    lanes::MaskOf<T> sliding{};
 };
+using ContactOutput = ContactOutputOf<Real>;
 
 /// Normal and tangential stiffness/damping of a pair at overlap delta (kn, kt [N/m]; eta [N s/m]).
-struct ContactCoefficients
+template <class T> struct ContactCoefficientsOf
 {
-    Real kn = 0, kt = 0, etaN = 0, etaT = 0;
+    T kn{}, kt{}, etaN{}, etaT{};
 };
+using ContactCoefficients = ContactCoefficientsOf<Real>;
 
-VERIDEM_HOT_INLINE ContactCoefficients contactCoefficients(const PairParams& p, Real overlap,
-                                                           Real effectiveMass, Real effectiveRadius)
+template <class Model, class T>
+VERIDEM_HOT_INLINE ContactCoefficientsOf<T> contactCoefficientsOf(const LawParamsOf<T>& p, T overlap,
+                                                                  T effectiveMass, T effectiveRadius)
 {
-    ContactCoefficients c;
-    if (p.normalModel == NormalModel::Linear)
+    using namespace lanes;
+    ContactCoefficientsOf<T> c;
+    const MaskOf<T> fromRate = p.dampingRate >= T{};
+    c.etaN = p.dampingRate * effectiveMass;
+    if constexpr (Model::normal == NormalModel::Linear)
     {
+        (void)overlap;
+        (void)effectiveRadius;
         c.kn = p.kn;
         c.kt = p.ktRatio * p.kn;
-        c.etaN = p.dampingRate >= 0 ? p.dampingRate * effectiveMass
-                                    : 2.0 * p.dampingRatio * std::sqrt(effectiveMass * p.kn);
+        if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
+            c.etaN = fromRate ? c.etaN : p.dampingFactor * laneSqrt(effectiveMass * c.kn);
     }
     else
     {
-        c.kn = hertzNormalStiffness(p.effectiveModulus, effectiveRadius, overlap);
-        c.kt = 8.0 * p.effectiveShearModulus * std::sqrt(effectiveRadius * overlap);
-        c.etaN = p.dampingRate >= 0 ? p.dampingRate * effectiveMass
-                                    : hertzDampingCoefficient(p.hertzBeta, c.kn, effectiveMass);
+        const T root = laneSqrt(effectiveRadius * overlap);
+        c.kn = 2.0 * p.modulus * root;
+        c.kt = 8.0 * p.shearModulus * root;
+        if (!allLanes(fromRate))
+            c.etaN = fromRate ? c.etaN : p.dampingFactor * laneSqrt(c.kn * effectiveMass);
     }
-    c.etaT = p.tangentialDampingRatio * c.etaN;
+    c.etaT = p.etaRatio * c.etaN;
     return c;
 }
 
-/// Rolling friction as a length [m] for a contact of rolling radius R_r [m].
-inline Real rollingFrictionLength(const PairParams& p, Real rollingRadius)
+/// Coefficients of a pair (scalar: the time-step estimate, tests).
+inline ContactCoefficients contactCoefficients(const PairParams& p, Real overlap, Real effectiveMass,
+                                               Real effectiveRadius)
 {
-    return p.rollingLength + p.rollingDimensionless * rollingRadius;
+    return withLawModel(p,
+                        [&](auto model) {
+                            return contactCoefficientsOf<decltype(model)>(lawParams(p), overlap,
+                                                                          effectiveMass, effectiveRadius);
+                        });
 }
 
-VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const ContactInput& in,
-                                                 ContactHistory& history, Real dt)
+/// The law. kProjected: the stored tangential spring is already in the tangent plane (the pair
+/// kernel rotates it in its input pass).
+template <class Model, class T, bool kProjected = false>
+VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const ContactInputOf<T>& in,
+                                                 ContactHistoryOf<T>& history, Real dt)
 {
-    // Built from locals and returned whole: a default-constructed `out` filled in field by field
-    // makes GCC zero it in memory first (rep stos) on every contact.
-    const ContactCoefficients c = contactCoefficients(p, in.overlap, in.effectiveMass, in.effectiveRadius);
+    using namespace lanes;
+    using V = Vec3Of<T>;
+    const T zero{}, one = broadcast<T>(1.0);
+    const ContactCoefficientsOf<T> c =
+        contactCoefficientsOf<Model, T>(p, in.overlap, in.effectiveMass, in.effectiveRadius);
 
     // 1. Normal force.
-    const Real normalSpeed = dot(in.relativeVelocity, in.normal); // < 0 while approaching
-    const Real elastic = p.normalModel == NormalModel::Linear
-                             ? c.kn * in.overlap
-                             : hertzElasticForce(p.effectiveModulus, in.effectiveRadius, in.overlap);
+    const T normalSpeed = dot(in.relativeVelocity, in.normal); // < 0 while approaching
+    T elastic;
+    if constexpr (Model::normal == NormalModel::Linear)
+        elastic = c.kn * in.overlap;
+    else
+        elastic = hertzElasticForce<T>(p.modulus, in.effectiveRadius, in.overlap);
     // Contact transitions. The dashpot force jumps to etaN |vn| at first touch and from it at
     // separation, so the force sampled at t+dt (which acts over the kick window
     // [t+dt/2, t+3dt/2]) would otherwise act for a full step whatever fraction of the window is
     // in contact: an O(zeta omega dt) error in e that depends on where first touch falls between
     // steps. When the neighbouring step (t before first touch, t+2dt after separation) is out of
     // contact, i.e. delta < |vn| dt, the dashpot is weighted by the contact time credited to this
-    // window, 1/2 + delta/(|vn| dt) (derivation in docs/models.md).
-    const Real travel = std::fabs(normalSpeed) * dt;
-    const Real dashpotWeight = in.overlap < travel ? 0.5 + in.overlap / travel : 1.0;
+    // window, 1/2 + delta/(|vn| dt) (derivation in docs/models.md). Its division runs only if a
+    // lane needs it.
+    const T travel = laneAbs(normalSpeed) * dt;
+    const MaskOf<T> transition = in.overlap < travel;
+    T dashpotWeight = one;
+    if (anyLane(transition))
+        dashpotWeight = transition ? 0.5 + in.overlap / travel : one;
     // The dashpot needs the normal speed at t+dt, but only the half-step speed is known. Solve
     // the pair's own final half kick for it, u = u_half + dt/2 (elastic - eta u)/m*, so that
     // the damping of an isolated contact is integrated to second order (other forces on the two
     // bodies are neglected in this estimate). Written with m* in numerator and denominator,
     // u = (m* u_half + dt/2 elastic) / (m* + dt/2 eta), so that it costs one division.
-    const Real dampingWeight = dashpotWeight * c.etaN;
+    const T dampingWeight = dashpotWeight * c.etaN;
     const Real halfStep = 0.5 * dt;
-    const Real normalSpeedEnd =
+    const T normalSpeedEnd =
         (in.effectiveMass * normalSpeed + halfStep * elastic) / (in.effectiveMass + halfStep * dampingWeight);
-    const Real normalForce = elastic - dampingWeight * normalSpeedEnd;
+    const T normalForce = elastic - dampingWeight * normalSpeedEnd;
 
     // 2. Tangential force, capped by mu * Fn.
-    const Vec3 tangentialVelocity = in.relativeVelocity - normalSpeed * in.normal;
-    const TangentialResult t = coulombSpringForce(c.kt, c.etaT, p.mu, normalForce, history.tangentialSpring,
-                                                  in.normal, tangentialVelocity, dt);
+    const V tangentialVelocity = in.relativeVelocity - normalSpeed * in.normal;
+    const TangentialResultOf<T> t = coulombSpring<T, kProjected>(
+        c.kt, c.etaT, p.mu, normalForce, history.tangentialSpring, in.normal, tangentialVelocity, dt);
     history.tangentialSpring = t.spring;
 
     // 3. Rolling resistance, capped by muR * Fn. It opposes the whole relative angular velocity
     // unless the pair opts out of twist resistance (PairParams::rollingTwist, see materials.h).
-    const Vec3 resistedAngularVelocity =
-        p.rollingTwist ? in.relativeAngularVelocity
-                       : in.relativeAngularVelocity - dot(in.relativeAngularVelocity, in.normal) * in.normal;
-    Vec3 rollingTorque{};
-    if (p.rollingModel == RollingModel::ConstantTorque)
+    V rollingTorque{};
+    if constexpr (Model::rolling != RollingModel::None)
     {
-        rollingTorque = constantRollingTorque(rollingFrictionLength(p, in.effectiveRadius), normalForce,
-                                              resistedAngularVelocity, in.spinInertia, dt);
+        const V w = in.relativeAngularVelocity;
+        const V resisted = select(p.rollingTwist != zero, w, w - dot(w, in.normal) * in.normal);
+        const T muR = p.rollingLength + p.rollingDimless * in.effectiveRadius;
+        if constexpr (Model::rolling == RollingModel::ConstantTorque)
+            rollingTorque = constantRollingTorqueOf<T>(muR, normalForce, resisted, in.spinInertia, dt);
+        else
+        {
+            const T kr = 2.25 * c.kn * muR * muR;
+            const T cr = p.rollingDamping * 2.0 * laneSqrt(in.rollingInertia * kr);
+            const RollingSpringResultOf<T> r =
+                epsdRollingTorqueOf<T>(kr, cr, muR, normalForce, history.rollingSpring, resisted, dt);
+            history.rollingSpring = r.spring;
+            rollingTorque = r.torque;
+        }
     }
-    else if (p.rollingModel == RollingModel::Epsd)
-    {
-        const Real muR = rollingFrictionLength(p, in.effectiveRadius);
-        const Real kr = 2.25 * c.kn * muR * muR;
-        const Real cr = p.rollingDampingRatio * 2.0 * std::sqrt(in.rollingInertia * kr);
-        const RollingSpringResult r =
-            epsdRollingTorque(kr, cr, muR, normalForce, history.rollingSpring, resistedAngularVelocity, dt);
-        history.rollingSpring = r.spring;
-        rollingTorque = r.torque;
-    }
-    return ContactOutput{normalForce * in.normal + t.force, t.force, rollingTorque, normalForce, t.sliding};
+    (void)zero;
+    return {normalForce * in.normal + t.force, t.force, rollingTorque, normalForce, t.sliding};
+}
+
+/// The law for one contact of a pair with parameters p (the scalar path: width one).
+VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const ContactInput& in,
+                                                 ContactHistory& history, Real dt)
+{
+    return withLawModel(p, [&](auto model) VERIDEM_INLINE_LAMBDA
+                        { return contactLaw<decltype(model), Real>(lawParams(p), in, history, dt); });
+}
+
+/// Rolling friction as a length [m] for a contact of rolling radius R_r [m].
+inline Real rollingFrictionLength(const PairParams& p, Real rollingRadius)
+{
+    return p.rollingLength + p.rollingDimensionless * rollingRadius;
 }
 
 } // namespace veridem::dem

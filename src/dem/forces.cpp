@@ -28,6 +28,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <immintrin.h>
+#include <optional>
 #include <string>
 
 namespace veridem::dem
@@ -65,18 +66,6 @@ void foldHealth(StepHealth& health, const ContactHealth* chunk, int chunks, std:
     }
 }
 
-/// What the contact law reads beyond the linear normal and tangential model.
-struct ExtraInputs
-{
-    bool effectiveRadius, spinInertia, rollingInertia;
-};
-
-ExtraInputs extraInputsFor(const PairParams& params)
-{
-    return {params.normalModel == NormalModel::Hertz || params.rollingModel != RollingModel::None,
-            params.rollingModel == RollingModel::ConstantTorque, params.rollingModel == RollingModel::Epsd};
-}
-
 /// Where the pair loop writes. Array bases are held in locals: a byte store (mayBeActive) may alias
 /// anything, so GCC would otherwise reload every vector's pointer after it.
 struct PairSink
@@ -86,12 +75,15 @@ struct PairSink
     const std::uint32_t* deferredIndex;    // per candidate, or NeighborList::kInBlock
     NeighborList::DeferredShare* deferred; // on the second particle of a cross-block slot
     Vec3* spring;                          // tangential spring per candidate [m]
+    Vec3* rolling;                         // rolling spring per candidate [N m], or null if none is kept
     std::uint8_t* mayBeActive;             // per candidate
 
     explicit PairSink(World& world)
         : force(world.particles.force.data()), torque(world.particles.torque.data()),
           deferredIndex(world.neighbors.activeDeferred.data()), deferred(world.neighbors.deferred.data()),
-          spring(world.neighbors.activeSpring.data()), mayBeActive(world.neighbors.activeMayBeActive.data())
+          spring(world.neighbors.activeSpring.data()),
+          rolling(world.neighbors.keepRollingHistory ? world.neighbors.activeRolling.data() : nullptr),
+          mayBeActive(world.neighbors.activeMayBeActive.data())
     {
     }
 
@@ -145,44 +137,6 @@ struct PairSink
 // ---------------------------------------------------------------------------------------------
 using namespace lanes; // Lanes2, Lanes4, Index4, kWidth, load, store (dem/lanes.h)
 
-// The helpers are always inlined, so that they are compiled for the instruction set of the
-// kernel variant that calls them.
-template <class V> VERIDEM_HOT_INLINE V laneSqrt(V x) // correctly rounded, as std::sqrt
-{
-    V r;
-    for (std::size_t l = 0; l < kWidth<V>; ++l)
-        r[l] = __builtin_sqrt(x[l]); // one packed square root (-fno-math-errno)
-    return r;
-}
-
-// Reductions of a comparison mask (lanes 0 or -1) by halving: a few register operations,
-// where a loop over the lanes compiled to a chain of extracts and branches. (movmskpd would be
-// one instruction, but a target-specific builtin cannot be inlined into these untargeted
-// templates.)
-template <class M> VERIDEM_HOT_INLINE bool anyLane(const M& mask)
-{
-    if constexpr (sizeof(M) == 32)
-    {
-        const auto half =
-            __builtin_shufflevector(mask, mask, 0, 1) | __builtin_shufflevector(mask, mask, 2, 3);
-        return (half[0] | half[1]) != 0;
-    }
-    else
-        return (mask[0] | mask[1]) != 0;
-}
-
-template <class M> VERIDEM_HOT_INLINE bool allLanes(const M& mask)
-{
-    if constexpr (sizeof(M) == 32)
-    {
-        const auto half =
-            __builtin_shufflevector(mask, mask, 0, 1) & __builtin_shufflevector(mask, mask, 2, 3);
-        return (half[0] & half[1]) != 0;
-    }
-    else
-        return (mask[0] & mask[1]) != 0;
-}
-
 /// Four contacts' x, y, z lanes -> one (x, y, z, 0) vector per contact: unpacks within 128-bit
 /// halves, then half swaps (8 shuffles; interleaving across halves first costs 14).
 VERIDEM_HOT_INLINE void transpose(const Lanes4& x, const Lanes4& y, const Lanes4& z, Lanes4* out)
@@ -218,20 +172,28 @@ VERIDEM_HOT_INLINE void subtractFrom(double* sum, const Lanes4& v)
 constexpr std::size_t kPrefetchAhead = 16; // candidates between a prefetch and its use
 constexpr std::size_t kBatch = 64;         // contacts per batch (a multiple of every width); ~20 KB, in L1
 
-/// Pair parameters per lane of a batch (filled only if there is more than one material pair).
+/// Pair parameters per lane of a batch (filled only if there is more than one material pair):
+/// LawParams, one array per field.
 struct LaneParams
 {
-    alignas(64) double kn[kBatch], ktRatio[kBatch], rate[kBatch], fromRatio[kBatch], etaRatio[kBatch],
-        mu[kBatch];
+    alignas(64) double kn[kBatch], ktRatio[kBatch], modulus[kBatch],
+        shearModulus[kBatch], rate[kBatch], factor[kBatch], etaRatio[kBatch], mu[kBatch],
+        rollingLength[kBatch], rollingDimless[kBatch], rollingDamping[kBatch], rollingTwist[kBatch];
 
-    void set(std::size_t m, const PairParams& pp)
+    /// The fields, in LawParams' order.
+    std::array<double*, 12> fields()
     {
-        kn[m] = pp.kn;
-        ktRatio[m] = pp.ktRatio;
-        rate[m] = pp.dampingRate;
-        fromRatio[m] = 2.0 * pp.dampingRatio;
-        etaRatio[m] = pp.tangentialDampingRatio;
-        mu[m] = pp.mu;
+        return {kn,       ktRatio, modulus,       shearModulus,   rate,           factor,
+                etaRatio, mu,      rollingLength, rollingDimless, rollingDamping, rollingTwist};
+    }
+    void set(std::size_t m, const LawParams& p)
+    {
+        const std::array<double, 12> values{
+            p.kn,       p.ktRatio, p.modulus,       p.shearModulus,   p.dampingRate,    p.dampingFactor,
+            p.etaRatio, p.mu,      p.rollingLength, p.rollingDimless, p.rollingDamping, p.rollingTwist};
+        const std::array<double*, 12> f = fields();
+        for (std::size_t k = 0; k < f.size(); ++k)
+            f[k][m] = values[k];
     }
 };
 
@@ -348,141 +310,71 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
 
 /// The pair parameters in lanes: broadcast once per kernel call if there is one material pair
 /// (`uniform`), else loaded per lane from a LaneParams.
-template <class Lanes> struct LaneConstants
-{
-    bool perLane;
-    Lanes kn, ktRatio, rate, fromRatio, etaRatio, mu;
-
-    [[gnu::always_inline]] explicit LaneConstants(const PairParams* uniform) : perLane(uniform == nullptr)
-    {
-        const Lanes zero = {};
-        kn = ktRatio = rate = fromRatio = etaRatio = mu = zero;
-        if (uniform)
-        {
-            kn = zero + uniform->kn;
-            ktRatio = zero + uniform->ktRatio;
-            rate = zero + uniform->dampingRate;
-            fromRatio = zero + 2.0 * uniform->dampingRatio;
-            etaRatio = zero + uniform->tangentialDampingRatio;
-            mu = zero + uniform->mu;
-        }
-    }
-    /// Lanes m .. m + width of a parameter (`field` here, `values` in a LaneParams).
-    VERIDEM_HOT_INLINE Lanes get(Lanes LaneConstants::*field, const double* values, std::size_t m) const
-    {
-        return perLane ? load<Lanes>(values + m) : this->*field;
-    }
-};
-
-/// What the contact law gives in lanes: signed normal force [N], tangential force [N], updated
-/// tangential spring [m].
-/// projectSpringToTangentPlane in lanes (the same operations): the spring h [m] rotated into the
-/// plane normal to n, its length kept, into p.
 template <class Lanes>
-VERIDEM_HOT_INLINE void projectSpringLanes(Lanes nx, Lanes ny, Lanes nz, Lanes hx, Lanes hy, Lanes hz,
-                                           Lanes& px, Lanes& py, Lanes& pz)
+VERIDEM_HOT_INLINE LawParamsOf<Lanes> laneLawParams(const LawParams* uniform, const LaneParams& law,
+                                                    std::size_t m)
 {
-    using LaneMask = decltype(Lanes{} < Lanes{});
-    const Lanes zero = {};
-    const Lanes oldLength2 = hx * hx + hy * hy + hz * hz;
-    const Lanes along = hx * nx + hy * ny + hz * nz;
-    const Lanes qx = hx - along * nx, qy = hy - along * ny, qz = hz - along * nz;
-    const Lanes newLength2 = qx * qx + qy * qy + qz * qz;
-    const Lanes lengthRatio = oldLength2 / newLength2;
-    const Lanes rescale = laneSqrt(lengthRatio);
-    const LaneMask keep = oldLength2 == zero, vanish = newLength2 == zero;
-    px = keep ? hx : (vanish ? zero : qx * rescale);
-    py = keep ? hy : (vanish ? zero : qy * rescale);
-    pz = keep ? hz : (vanish ? zero : qz * rescale);
+    if (uniform)
+    {
+        const auto b = [](Real v) VERIDEM_INLINE_LAMBDA { return broadcast<Lanes>(v); };
+        return {b(uniform->kn),
+                b(uniform->ktRatio),
+                b(uniform->modulus),
+                b(uniform->shearModulus),
+                b(uniform->dampingRate),
+                b(uniform->dampingFactor),
+                b(uniform->etaRatio),
+                b(uniform->mu),
+                b(uniform->rollingLength),
+                b(uniform->rollingDimless),
+                b(uniform->rollingDamping),
+                b(uniform->rollingTwist)};
+    }
+    const auto l = [&](const double* a) VERIDEM_INLINE_LAMBDA { return load<Lanes>(a + m); };
+    return {l(law.kn),
+            l(law.ktRatio),
+            l(law.modulus),
+            l(law.shearModulus),
+            l(law.rate),
+            l(law.factor),
+            l(law.etaRatio),
+            l(law.mu),
+            l(law.rollingLength),
+            l(law.rollingDimless),
+            l(law.rollingDamping),
+            l(law.rollingTwist)};
 }
 
-template <class Lanes> struct LaneLaw
+/// The law of a world with a single material pair: its parameters and model bit (no table look-up
+/// per contact).
+struct UniformLaw
 {
-    Lanes normalForce, ftx, fty, ftz, springX, springY, springZ;
+    LawParams params;
+    unsigned models; // 1 << lawModelIndex
 };
 
-/// The contact law of a batchable pair (contactCoefficients' linear branch, evaluateContact
-/// without rolling resistance) for the lanes m .. m + width of a batch, with the IEEE operations
-/// of the scalar law in the same order. Inputs as ContactInput: unit normal n, overlap [m],
-/// relative contact velocity rv [m/s], effective mass [kg], stored spring h [m]; dt [s].
-/// kProjected: h is already rotated into the tangent plane (projectSpringLanes, by the caller).
-template <class Lanes, bool kProjected>
-VERIDEM_HOT_INLINE LaneLaw<Lanes> linearLawLanes(const LaneConstants<Lanes>& c, const LaneParams& law,
-                                                 std::size_t m, Real dt, Lanes nx, Lanes ny, Lanes nz,
-                                                 Lanes overlap, Lanes rvx, Lanes rvy, Lanes rvz,
-                                                 Lanes effectiveMass, Lanes hx, Lanes hy, Lanes hz)
-{
-    using LaneMask = decltype(Lanes{} < Lanes{});
-    const Lanes zero = {}, one = zero + 1.0;
-    // contactCoefficients(), linear branch.
-    const Lanes kn = c.get(&LaneConstants<Lanes>::kn, law.kn, m);
-    const Lanes kt = c.get(&LaneConstants<Lanes>::ktRatio, law.ktRatio, m) * kn;
-    const Lanes rate = c.get(&LaneConstants<Lanes>::rate, law.rate, m);
-    const LaneMask fromRate = rate >= zero;
-    Lanes etaN = rate * effectiveMass;
-    if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
-    {
-        const Lanes fromRatio = c.get(&LaneConstants<Lanes>::fromRatio, law.fromRatio, m);
-        etaN = fromRate ? etaN : fromRatio * laneSqrt(effectiveMass * kn);
-    }
-    const Lanes etaT = c.get(&LaneConstants<Lanes>::etaRatio, law.etaRatio, m) * etaN;
-
-    // evaluateContact(): 1. normal force.
-    const Lanes normalSpeed = rvx * nx + rvy * ny + rvz * nz;
-    const Lanes elastic = kn * overlap;
-    const Lanes travel =
-        reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(normalSpeed) & 0x7fffffffffffffffLL) * dt;
-    // Divisions and roots share the bottleneck port with the shuffles (Zen 3): those of rare
-    // branches run only if a lane takes them.
-    const LaneMask transition = overlap < travel;
-    Lanes dashpotWeight = one;
-    if (anyLane(transition))
-        dashpotWeight = transition ? 0.5 + overlap / travel : one;
-    const Lanes dampingWeight = dashpotWeight * etaN;
-    const Real halfStep = 0.5 * dt;
-    const Lanes normalSpeedEnd =
-        (effectiveMass * normalSpeed + halfStep * elastic) / (effectiveMass + halfStep * dampingWeight);
-    const Lanes normalForce = elastic - dampingWeight * normalSpeedEnd;
-
-    // 2. coulombSpringForce().
-    const Lanes vtx = rvx - normalSpeed * nx, vty = rvy - normalSpeed * ny, vtz = rvz - normalSpeed * nz;
-    Lanes px = hx, py = hy, pz = hz; // kProjected: the caller rotated h into the plane already
-    if constexpr (!kProjected)
-        projectSpringLanes(nx, ny, nz, hx, hy, hz, px, py, pz);
-    const Lanes springX = px + vtx * dt, springY = py + vty * dt, springZ = pz + vtz * dt;
-    const Lanes trialX = -kt * springX - etaT * vtx, trialY = -kt * springY - etaT * vty,
-                trialZ = -kt * springZ - etaT * vtz;
-    const Lanes cap = c.get(&LaneConstants<Lanes>::mu, law.mu, m) * (normalForce > zero ? normalForce : zero);
-    const Lanes trialLength2 = trialX * trialX + trialY * trialY + trialZ * trialZ;
-    const LaneMask sticks = trialLength2 <= cap * cap;
-    Lanes ftx = trialX, fty = trialY, ftz = trialZ, newSpringX = springX, newSpringY = springY,
-          newSpringZ = springZ;
-    if (!allLanes(sticks))
-    {
-        const Lanes slideScale = cap / laneSqrt(trialLength2);
-        const Lanes slideX = trialX * slideScale, slideY = trialY * slideScale, slideZ = trialZ * slideScale;
-        const LaneMask stiff = kt > zero;
-        ftx = sticks ? trialX : slideX;
-        fty = sticks ? trialY : slideY;
-        ftz = sticks ? trialZ : slideZ;
-        newSpringX = sticks ? springX : (stiff ? -(slideX + etaT * vtx) / kt : zero);
-        newSpringY = sticks ? springY : (stiff ? -(slideY + etaT * vty) / kt : zero);
-        newSpringZ = sticks ? springZ : (stiff ? -(slideZ + etaT * vtz) / kt : zero);
-    }
-    return {normalForce, ftx, fty, ftz, newSpringX, newSpringY, newSpringZ};
-}
+/// The models with rolling resistance (their lawModelIndex bits).
+constexpr unsigned kRollingModels = 0b110110u;
 
 /// A batch of touching contacts for the lane law, pairs or walls: the contact inputs as the scalar
 /// path computes them (pairContactScalar, wallContactInput), one array per component, and the
-/// law's outputs.
+/// law's outputs. The rolling inputs and outputs are filled only if a model of the batch has
+/// rolling resistance (`rolling`).
 struct LawBatch
 {
     LaneParams law;
     alignas(32) double nx[kBatch], ny[kBatch], nz[kBatch], overlap[kBatch], rvx[kBatch], rvy[kBatch],
         rvz[kBatch], mass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
+    alignas(32) double wx[kBatch], wy[kBatch], wz[kBatch], radius[kBatch], spinInertia[kBatch],
+        rollingInertia[kBatch], rx[kBatch], ry[kBatch], rz[kBatch];
     alignas(32) double normalForce[kBatch], ftx[kBatch], fty[kBatch], ftz[kBatch], springX[kBatch],
         springY[kBatch], springZ[kBatch];
+    alignas(32) double torqueX[kBatch], torqueY[kBatch], torqueZ[kBatch], rollingX[kBatch], rollingY[kBatch],
+        rollingZ[kBatch];
     std::uint32_t slot[kBatch], particle[kBatch];
+    std::uint8_t model[kBatch]; // lawModelIndex of each contact's pair
+    unsigned models = 0;        // bit lawModelIndex set for every model in the batch
+    bool rolling = false;       // some model of the batch has rolling resistance
 
     /// Contact m's inputs: its slot and particle, unit normal, overlap [m], relative contact
     /// velocity [m/s], effective mass [kg] and stored spring [m].
@@ -504,40 +396,191 @@ struct LawBatch
         hy[m] = spring.y;
         hz[m] = spring.z;
     }
+    /// Contact m's rolling inputs: relative angular velocity [rad/s], R* [m], spin and rolling
+    /// inertia [kg m^2], stored rolling spring [N m].
+    VERIDEM_HOT_INLINE void setRollingInputs(std::size_t m, const ContactInput& in, const Vec3& rollingSpring)
+    {
+        wx[m] = in.relativeAngularVelocity.x;
+        wy[m] = in.relativeAngularVelocity.y;
+        wz[m] = in.relativeAngularVelocity.z;
+        radius[m] = in.effectiveRadius;
+        spinInertia[m] = in.spinInertia;
+        rollingInertia[m] = in.rollingInertia;
+        rx[m] = rollingSpring.x;
+        ry[m] = rollingSpring.y;
+        rz[m] = rollingSpring.z;
+    }
+    /// Contact q's rolling torque [N m] and updated rolling spring [N m] (zero without rolling).
+    Vec3 rollingTorqueOf(std::size_t q) const
+    {
+        return rolling ? Vec3{torqueX[q], torqueY[q], torqueZ[q]} : Vec3{};
+    }
+    Vec3 rollingSpringOf(std::size_t q) const
+    {
+        return rolling ? Vec3{rollingX[q], rollingY[q], rollingZ[q]} : Vec3{};
+    }
+    /// The arrays of the inputs (padding lanes repeat the last contact).
+    std::array<double*, 20> inputs()
+    {
+        return {nx, ny,     nz,          overlap,        rvx, rvy, rvz, mass, hx, hy, hz, wx, wy,
+                wz, radius, spinInertia, rollingInertia, rx,  ry,  rz};
+    }
 };
+
+/// The law for the lanes [0, padded) of `b` with the models `Model`, results into `b`'s outputs
+/// for the lanes whose model is `index` (all lanes if `all`).
+template <class Model, class Lanes, bool kProjected>
+VERIDEM_HOT_INLINE void lawLanesOf(LawBatch& b, std::size_t padded, Real dt, const LawParams* uniform,
+                                   unsigned index, bool all)
+{
+    constexpr std::size_t kLanes = kWidth<Lanes>;
+    constexpr bool kRolling = Model::rolling != RollingModel::None;
+    for (std::size_t m = 0; m < padded; m += kLanes)
+    {
+        const auto l = [&](const double* a) VERIDEM_INLINE_LAMBDA { return load<Lanes>(a + m); };
+        ContactInputOf<Lanes> in;
+        in.normal = {l(b.nx), l(b.ny), l(b.nz)};
+        in.overlap = l(b.overlap);
+        in.relativeVelocity = {l(b.rvx), l(b.rvy), l(b.rvz)};
+        in.effectiveMass = l(b.mass);
+        ContactHistoryOf<Lanes> h;
+        h.tangentialSpring = {l(b.hx), l(b.hy), l(b.hz)};
+        if constexpr (kRolling || Model::normal == NormalModel::Hertz)
+            in.effectiveRadius = l(b.radius);
+        if constexpr (kRolling)
+        {
+            in.relativeAngularVelocity = {l(b.wx), l(b.wy), l(b.wz)};
+            in.spinInertia = l(b.spinInertia);
+            in.rollingInertia = l(b.rollingInertia);
+            h.rollingSpring = {l(b.rx), l(b.ry), l(b.rz)};
+        }
+        const ContactOutputOf<Lanes> out =
+            contactLaw<Model, Lanes, kProjected>(laneLawParams<Lanes>(uniform, b.law, m), in, h, dt);
+        const auto put = [&](double* a, const Lanes& v) VERIDEM_INLINE_LAMBDA
+        {
+            if (all)
+                store(a + m, v);
+            else
+                for (std::size_t q = 0; q < kLanes; ++q)
+                    if (b.model[m + q] == index)
+                        a[m + q] = v[q];
+        };
+        put(b.normalForce, out.normalForce);
+        put(b.ftx, out.tangentialForce.x);
+        put(b.fty, out.tangentialForce.y);
+        put(b.ftz, out.tangentialForce.z);
+        put(b.springX, h.tangentialSpring.x);
+        put(b.springY, h.tangentialSpring.y);
+        put(b.springZ, h.tangentialSpring.z);
+        if (b.rolling)
+        {
+            put(b.torqueX, out.rollingTorque.x);
+            put(b.torqueY, out.rollingTorque.y);
+            put(b.torqueZ, out.rollingTorque.z);
+            put(b.rollingX, h.rollingSpring.x);
+            put(b.rollingY, h.rollingSpring.y);
+            put(b.rollingZ, h.rollingSpring.z);
+        }
+    }
+}
 
 /// The contact law of the contacts [0, count) of `b` in lanes (the same law and bits as
 /// evaluateContact; a wall is a partner of infinite mass, so m* = m). kProjected: b's springs are
-/// already in the tangent plane (the pair kernel's input pass rotates them).
+/// already in the tangent plane (the pair kernel's input pass rotates them). Each model of the
+/// batch runs once over the batch, and a contact takes the results of its own model.
 template <class Lanes, bool kProjected>
-VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
 {
     constexpr std::size_t kLanes = kWidth<Lanes>;
     const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
     for (std::size_t m = count; m < padded; ++m) // padding lanes repeat the last contact
     {
-        for (double* a : {b.nx, b.ny, b.nz, b.overlap, b.rvx, b.rvy, b.rvz, b.mass, b.hx, b.hy, b.hz})
+        for (double* a : b.inputs())
             a[m] = a[count - 1];
+        b.model[m] = b.model[count - 1];
         if (!uniform)
-            for (double* a : {b.law.kn, b.law.ktRatio, b.law.rate, b.law.fromRatio, b.law.etaRatio, b.law.mu})
+            for (double* a : b.law.fields())
                 a[m] = a[count - 1];
     }
-    const LaneConstants<Lanes> constants(uniform);
-    for (std::size_t m = 0; m < padded; m += kLanes)
+    const bool single = (b.models & (b.models - 1)) == 0;
+    forEachLawModel(b.models,
+                    [&](auto model, unsigned index) VERIDEM_INLINE_LAMBDA {
+                        lawLanesOf<decltype(model), Lanes, kProjected>(b, padded, dt, uniform, index, single);
+                    });
+}
+
+/// The laws of the contacts [0, padded) of `b`: the uniform law's model, or each contact's pair
+/// (pairOf(m)) parameters and model.
+template <class PairOf>
+VERIDEM_HOT_INLINE void setBatchLaws(LawBatch& b, std::size_t padded, const UniformLaw* uniform,
+                                     const PairOf& pairOf)
+{
+    if (uniform)
+        b.models = uniform->models;
+    else
     {
-        const LaneLaw<Lanes> out = linearLawLanes<Lanes, kProjected>(
-            constants, b.law, m, dt, load<Lanes>(b.nx + m), load<Lanes>(b.ny + m), load<Lanes>(b.nz + m),
-            load<Lanes>(b.overlap + m), load<Lanes>(b.rvx + m), load<Lanes>(b.rvy + m),
-            load<Lanes>(b.rvz + m), load<Lanes>(b.mass + m), load<Lanes>(b.hx + m), load<Lanes>(b.hy + m),
-            load<Lanes>(b.hz + m));
-        store(b.normalForce + m, out.normalForce);
-        store(b.ftx + m, out.ftx);
-        store(b.fty + m, out.fty);
-        store(b.ftz + m, out.ftz);
-        store(b.springX + m, out.springX);
-        store(b.springY + m, out.springY);
-        store(b.springZ + m, out.springZ);
+        b.models = 0;
+        for (std::size_t m = 0; m < padded; ++m)
+        {
+            const PairParams& pp = pairOf(m);
+            const unsigned model = lawModelIndex(pp);
+            b.law.set(m, lawParams(pp));
+            b.model[m] = static_cast<std::uint8_t>(model);
+            b.models |= 1u << model;
+        }
     }
+    b.rolling = (b.models & kRollingModels) != 0;
+}
+
+/// Contact m's law: its pair's parameters and model, unless the world has a single pair.
+VERIDEM_HOT_INLINE void addContactLaw(LawBatch& b, std::size_t m, const UniformLaw* uniform,
+                                      const PairParams& pp)
+{
+    if (uniform)
+        return;
+    const unsigned model = lawModelIndex(pp);
+    b.law.set(m, lawParams(pp));
+    b.model[m] = static_cast<std::uint8_t>(model);
+    b.models |= 1u << model;
+}
+
+/// Before the law of a batch filled by addContactLaw: the models it holds; after it, `models` is
+/// reset for the next batch by the caller (finishBatchLaws sets, the kernel reads).
+VERIDEM_HOT_INLINE void finishBatchLaws(LawBatch& b, const UniformLaw* uniform)
+{
+    if (uniform)
+        b.models = uniform->models;
+    b.rolling = (b.models & kRollingModels) != 0;
+}
+
+/// The inputs beyond the linear law's of the pair contacts [0, padded) of `b` (R*, the inertias,
+/// the relative angular velocity, the stored rolling spring), as pairContactScalar computes them.
+[[gnu::noinline]] void pairExtraInputs(const World& world, const PairBatch& b, LawBatch& law,
+                                       std::size_t padded)
+{
+    const ParticleStore& p = world.particles;
+    const NeighborList& list = world.neighbors;
+    for (std::size_t m = 0; m < padded; ++m)
+    {
+        const std::uint32_t i = b.i[m], j = b.j[m];
+        const Real ri = b.ri[m], rj = b.rj[m];
+        ContactInput in;
+        in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+        in.effectiveRadius = ri * rj / (ri + rj);
+        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
+                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+        law.setRollingInputs(m, in, list.keepRollingHistory ? list.activeRolling[b.candidate[m]] : Vec3{});
+    }
+}
+
+/// The law of the world's single material pair, if it has one.
+std::optional<UniformLaw> uniformLaw(const World& world)
+{
+    if (world.pairs.count() != 1)
+        return std::nullopt;
+    const PairParams& p = world.pairs(0, 0);
+    return UniformLaw{lawParams(p), 1u << lawModelIndex(p)};
 }
 
 /// Adds contact q of batch `b` to the sink: force f [N] on i and -f on j, torques ti on i and tj
@@ -574,7 +617,7 @@ VERIDEM_HOT_INLINE void scatterContact(const PairSink& sink, const PairBatch& b,
 template <class Lanes>
 VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& sink, Real dt,
                                           std::size_t count, WorstOverlap& worst, PairBatch& b,
-                                          const PairParams* uniform)
+                                          const UniformLaw* uniform)
 {
     constexpr std::size_t kLanes = kWidth<Lanes>;
     using LaneMask = decltype(Lanes{} < Lanes{});
@@ -599,11 +642,13 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     // more than the reorder buffer, left them in sequence); the inputs and outputs stay in L1.
     LawBatch law;
     alignas(32) double leverIs[kBatch], leverJs[kBatch], minRadii[kBatch];
-    if (!uniform)
-        for (std::size_t m = 0; m < padded; ++m)
-            law.law.set(m, world.pairs(p.material[b.i[m]], p.material[b.j[m]]));
+    setBatchLaws(law, padded, uniform,
+                 [&](std::size_t m) VERIDEM_INLINE_LAMBDA -> const PairParams&
+                 { return world.pairs(p.material[b.i[m]], p.material[b.j[m]]); });
+    if (law.models != 1u) // another model than linear without rolling: R*, inertias, w_rel
+        pairExtraInputs(world, b, law, padded);
 
-    const Lanes zero = {}, one = zero + 1.0, negativeZero = -zero;
+    const Lanes zero = {}, one = zero + 1.0;
     // No prefetch of the partners' velocity rows: the lambda that was to issue them was never
     // compiled into the kernel (GCC 12 deletes calls of a lambda whose only effect is a prefetch
     // once it is inlined into an always_inline function), and issuing them directly (two per
@@ -647,18 +692,17 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         // The spring rotated into the tangent plane here rather than in the law pass (its
         // division and square root): the divider work of the two passes is then about even
         // (two square roots and two divisions here, one division there, per group).
-        Lanes px, py, pz;
-        projectSpringLanes(nx, ny, nz, h.x, h.y, h.z, px, py, pz);
-        store(law.hx + m, px);
-        store(law.hy + m, py);
-        store(law.hz + m, pz);
+        const V3<Lanes> projected = projectSpring<Lanes>({h.x, h.y, h.z}, {nx, ny, nz});
+        store(law.hx + m, projected.x);
+        store(law.hy + m, projected.y);
+        store(law.hz + m, projected.z);
         store(leverIs + m, leverI);
         store(leverJs + m, leverJ);
         store(minRadii + m, rj < ri ? rj : ri);
     }
 
     // 2. The law (lawLanes, as the wall contacts').
-    lawLanes<Lanes, true>(law, padded, dt, uniform);
+    lawLanes<Lanes, true>(law, padded, dt, uniform ? &uniform->params : nullptr);
 
     // 3. Forces and torques, scattered in lane (= slot) order; the health record.
     for (std::size_t m = 0; m < padded; m += kLanes)
@@ -668,11 +712,18 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
                     fty = load<Lanes>(law.fty + m), ftz = load<Lanes>(law.ftz + m);
         const Lanes leverI = load<Lanes>(leverIs + m), leverJ = load<Lanes>(leverJs + m);
         const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
-        // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j, rolling = 0 here.
+        // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j (rolling = +0 without
+        // a rolling model, so -rolling = -0, as the scalar path's).
         const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
-        const Lanes tix = zero - leverI * ttx, tiy = zero - leverI * tty, tiz = zero - leverI * ttz;
-        const Lanes tjx = negativeZero - leverJ * ttx, tjy = negativeZero - leverJ * tty,
-                    tjz = negativeZero - leverJ * ttz;
+        Lanes rx = zero, ry = zero, rz = zero;
+        if (law.rolling)
+        {
+            rx = load<Lanes>(law.torqueX + m);
+            ry = load<Lanes>(law.torqueY + m);
+            rz = load<Lanes>(law.torqueZ + m);
+        }
+        const Lanes tix = rx - leverI * ttx, tiy = ry - leverI * tty, tiz = rz - leverI * ttz;
+        const Lanes tjx = -rx - leverJ * ttx, tjy = -ry - leverJ * tty, tjz = -rz - leverJ * ttz;
 
         // Scatter: one (x, y, z, 0) vector per contact and sum.
         Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
@@ -682,6 +733,10 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         transpose(load<Lanes>(law.springX + m), load<Lanes>(law.springY + m), load<Lanes>(law.springZ + m),
                   spring);
         const std::size_t lanes = std::min(kLanes, count - m);
+        if (law.rolling && sink.rolling)
+            for (std::size_t l = 0; l < lanes; ++l)
+                sink.rolling[b.candidate[m + l]] = {law.rollingX[m + l], law.rollingY[m + l],
+                                                    law.rollingZ[m + l]};
         if (lanes == kLanes) // (a constant trip count: unrolled, every lane index a constant)
         {
 #pragma GCC unroll 4
@@ -704,23 +759,23 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
 
 VERIDEM_AVX2_TARGET void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
                                           std::size_t count, WorstOverlap& worst, PairBatch& b,
-                                          const PairParams* uniform)
+                                          const UniformLaw* uniform)
 {
     pairContactsLanes<Lanes4>(world, sink, dt, count, worst, b, uniform);
 }
 
 void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std::size_t count,
-                          WorstOverlap& worst, PairBatch& b, const PairParams* uniform)
+                          WorstOverlap& worst, PairBatch& b, const UniformLaw* uniform)
 {
     pairContactsLanes<Lanes2>(world, sink, dt, count, worst, b, uniform);
 }
 
-VERIDEM_AVX2_TARGET void wallContactsAvx2(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+VERIDEM_AVX2_TARGET void wallContactsAvx2(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
 {
     lawLanes<Lanes4, false>(b, count, dt, uniform);
 }
 
-void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const PairParams* uniform)
+void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
 {
     lawLanes<Lanes2, false>(b, count, dt, uniform);
 }
@@ -845,10 +900,10 @@ std::size_t selectTouchingPortable(const Candidates& c, std::size_t a, std::size
 using SelectPass = std::size_t (*)(const Candidates&, std::size_t, std::size_t, PairBatch&, std::size_t&,
                                    std::uint32_t*, std::size_t&);
 
-using WallKernel = void (*)(LawBatch&, std::size_t, Real, const PairParams*);
+using WallKernel = void (*)(LawBatch&, std::size_t, Real, const LawParams*);
 
 using PairKernel = void (*)(const World&, const PairSink&, Real, std::size_t, WorstOverlap&, PairBatch&,
-                            const PairParams*);
+                            const UniformLaw*);
 
 struct KernelVariant
 {
@@ -888,11 +943,10 @@ const KernelVariant*& currentVariant()
     return variant;
 }
 
-/// True if every contact takes the lane path: the lane kernel is enabled and every material pair
-/// (walls included) takes the lane law (PairTable::allLaneLaw).
+/// True if the contacts take the lane path (World::batchedContactKernel; every model runs there).
 bool lanesApply(const World& world)
 {
-    return world.batchedContactKernel && world.pairs.allLaneLaw();
+    return world.batchedContactKernel;
 }
 
 /// Touching candidate k through the general contact law (any model), added into the sink.
@@ -1063,7 +1117,8 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     const std::size_t n = p.size();
     const std::size_t pairCount = list.size();
     const bool allBatchable = lanesApply(world);
-    const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
+    const std::optional<UniformLaw> single = uniformLaw(world);
+    const UniformLaw* const uniform = single ? &*single : nullptr;
 
     constexpr std::size_t B = NeighborList::kBlockParticles;
     const std::size_t blocks = (n + B - 1) / B;
@@ -1345,23 +1400,27 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     ParticleStore& p = world.particles;
     WallContactList& list = world.wallContacts;
     ContactHealth health{0, 0, false, 0};
-    const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
+    const std::optional<UniformLaw> single = uniformLaw(world);
+    const UniformLaw* const uniform = single ? &*single : nullptr;
     const WallKernel kernel = currentVariant()->wallKernel;
     LawBatch b;
     std::size_t m = 0;
     const auto run = [&]
     {
-        kernel(b, m, dt, uniform);
+        finishBatchLaws(b, uniform);
+        kernel(b, m, dt, uniform ? &uniform->params : nullptr);
         for (std::size_t q = 0; q < m; ++q)
         {
             const std::uint32_t i = b.particle[q];
             const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
-            list.setHistory(b.slot[q], ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, Vec3{}});
+            list.setHistory(b.slot[q],
+                            ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
             const Vec3 arm = -p.radius[i] * normal;
-            addWallContact(p, i, b.normalForce[q] * normal + tangential, Vec3{} + cross(arm, tangential),
-                           b.overlap[q], health);
+            addWallContact(p, i, b.normalForce[q] * normal + tangential,
+                           b.rollingTorqueOf(q) + cross(arm, tangential), b.overlap[q], health);
         }
         m = 0;
+        b.models = 0;
     };
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
@@ -1375,11 +1434,15 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         }
         ++health.touching;
         Vec3 arm;
-        const ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
+        ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
         b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass,
                     list.tangentialSpring[k]);
-        if (!uniform)
-            b.law.set(m, world.pairs(p.material[i], wall.material));
+        addContactLaw(b, m, uniform, world.pairs(p.material[i], wall.material));
+        if (!uniform || uniform->models != 1u) // (as wallContactScalar)
+        {
+            in.rollingInertia = in.spinInertia + p.mass[i] * p.radius[i] * p.radius[i];
+            b.setRollingInputs(m, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
+        }
         if (++m == kBatch)
             run();
     }
@@ -1440,7 +1503,9 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     ParticleStore& p = world.particles;
     WallContactList& list = world.wallContacts;
     ContactHealth health{0, 0, false, 0};
-    const PairParams* uniform = world.pairs.count() == 1 ? &world.pairs(0, 0) : nullptr;
+    const std::optional<UniformLaw> single = uniformLaw(world);
+    const UniformLaw* const uniform = single ? &*single : nullptr;
+    const bool extraInputs = !uniform || uniform->models != 1u; // some model beyond the linear law's
     const Vec3* const position = p.position.data();
     const Vec3* const velocity = p.velocity.data();
     const Vec3* const angularVelocity = p.angularVelocity.data();
@@ -1458,18 +1523,20 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     // (Inlined: a lambda's own function would not have the caller's instruction set.)
     const auto run = [&]() __attribute__((always_inline))
     {
-        lawLanes<Lanes, false>(b, m, dt, uniform);
+        finishBatchLaws(b, uniform);
+        lawLanes<Lanes, false>(b, m, dt, uniform ? &uniform->params : nullptr);
         for (std::size_t q = 0; q < m; ++q)
         {
             const std::uint32_t i = b.particle[q];
             const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
-            if (rolling) // (the lane law keeps no rolling spring: zero, as wallForcesInLanes)
-                list.setHistory(b.slot[q],
-                                ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, Vec3{}});
+            if (rolling)
+                list.setHistory(b.slot[q], ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]},
+                                                          b.rollingSpringOf(q)});
             else
                 spring[b.slot[q]] = {b.springX[q], b.springY[q], b.springZ[q]};
             const Vec3 arm = -radius[i] * normal;
-            const Vec3 f = b.normalForce[q] * normal + tangential, t = Vec3{} + cross(arm, tangential);
+            const Vec3 f = b.normalForce[q] * normal + tangential,
+                       t = b.rollingTorqueOf(q) + cross(arm, tangential);
             force[i].x += f.x;
             force[i].y += f.y;
             force[i].z += f.z;
@@ -1479,6 +1546,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             foldWallOverlap(i, b.overlap[q], radius[i], health);
         }
         m = 0;
+        b.models = 0;
     };
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
@@ -1509,8 +1577,16 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             frame.velocity + cross(frame.angularVelocity, midStepContactPoint - frame.axis);
         const Vec3 relativeVelocity = v + cross(w, arm) - surfaceVelocity;
         b.setInputs(m, k, i, frame.normal, overlap, relativeVelocity, mass[i], spring[k]);
-        if (!uniform)
-            b.law.set(m, world.pairs(p.material[i], frame.material));
+        addContactLaw(b, m, uniform, world.pairs(p.material[i], frame.material));
+        if (extraInputs) // (as wallContactInput and wallContactScalar; a plane's R* is r)
+        {
+            ContactInput in;
+            in.relativeAngularVelocity = w - frame.angularVelocity;
+            in.effectiveRadius = r;
+            in.spinInertia = 1.0 / p.invInertia[i];
+            in.rollingInertia = in.spinInertia + mass[i] * r * r;
+            b.setRollingInputs(m, in, rolling ? list.rollingSpring[k] : Vec3{});
+        }
         if (++m == kBatch)
             run();
     }

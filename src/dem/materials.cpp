@@ -95,18 +95,11 @@ void PairTable::build(const std::vector<Material>& materials)
     for (std::uint32_t a = 0; a < count_; ++a)
         for (std::uint32_t b = 0; b < count_; ++b)
             table_[a * count_ + b] = mixMaterials(materials[a], materials[b]);
-    updateAllLaneLaw();
 }
 
 void PairTable::set(std::uint32_t a, std::uint32_t b, const PairParams& params)
 {
     table_.at(static_cast<std::size_t>(a) * count_ + b) = params;
-    updateAllLaneLaw();
-}
-
-void PairTable::updateAllLaneLaw()
-{
-    allLaneLaw_ = std::all_of(table_.begin(), table_.end(), laneLawApplies);
 }
 
 } // namespace veridem::dem

@@ -88,13 +88,6 @@ PairParams mixMaterials(const Material& a, const Material& b);
 /// Checks physical ranges; throws InputError naming the material and the value.
 void validateMaterial(const Material& m);
 
-/// True if a pair of these parameters takes the lane contact law (forces.cpp): linear normal
-/// force, no rolling resistance.
-inline bool laneLawApplies(const PairParams& params)
-{
-    return params.normalModel == NormalModel::Linear && params.rollingModel == RollingModel::None;
-}
-
 class PairTable
 {
   public:
@@ -103,16 +96,10 @@ class PairTable
     /// Replaces the parameters of the ordered pair (a, b).
     void set(std::uint32_t a, std::uint32_t b, const PairParams& params);
     std::uint32_t count() const { return count_; }
-    /// True if every pair takes the lane contact law (kept up to date by build and set, so that
-    /// the step asks it for free).
-    bool allLaneLaw() const { return allLaneLaw_; }
 
   private:
-    void updateAllLaneLaw();
-
     std::uint32_t count_ = 0;
     std::vector<PairParams> table_;
-    bool allLaneLaw_ = true;
 };
 
 } // namespace veridem::dem

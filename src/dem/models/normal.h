@@ -1,4 +1,5 @@
-// Normal contact force models (pure functions).
+// Normal contact force models (pure functions, templates over the number type T: double or a
+// vector of lanes, dem/lanes.h).
 //
 // Linear spring-dashpot (Cundall & Strack 1979; damping from restitution as in Tsuji et al. 1992):
 //     Fn = kn * delta + etaN * deltaDot,    deltaDot = -vn > 0 while approaching,
@@ -17,7 +18,9 @@
 #pragma once
 
 #include "core/constants.h"
+#include "core/hot.h"
 #include "core/vec3.h"
+#include "dem/lanes.h"
 
 #include <cmath>
 
@@ -33,27 +36,33 @@ inline Real dampingRatioFromRestitution(Real e)
 
 /// Linear spring-dashpot normal force [N] (positive = repulsive).
 /// kn [N/m], etaN [N s/m], overlap delta [m], overlapRate deltaDot [m/s] (> 0 approaching).
-inline Real linearNormalForce(Real kn, Real etaN, Real overlap, Real overlapRate)
+template <class T> VERIDEM_HOT_INLINE T linearNormalForce(T kn, T etaN, T overlap, T overlapRate)
 {
     return kn * overlap + etaN * overlapRate;
 }
 
 /// Hertz elastic normal force [N]: (4/3) E* sqrt(R*) delta^{3/2}. E* [Pa], R* [m], delta [m].
-inline Real hertzElasticForce(Real effectiveModulus, Real effectiveRadius, Real overlap)
+template <class T> VERIDEM_HOT_INLINE T hertzElasticForce(T effectiveModulus, T effectiveRadius, T overlap)
 {
-    return (4.0 / 3.0) * effectiveModulus * std::sqrt(effectiveRadius * overlap) * overlap;
+    return (4.0 / 3.0) * effectiveModulus * lanes::laneSqrt(effectiveRadius * overlap) * overlap;
 }
 
 /// Hertz normal contact stiffness dFn/d(delta) = 2 E* sqrt(R* delta) [N/m].
-inline Real hertzNormalStiffness(Real effectiveModulus, Real effectiveRadius, Real overlap)
+template <class T> VERIDEM_HOT_INLINE T hertzNormalStiffness(T effectiveModulus, T effectiveRadius, T overlap)
 {
-    return 2.0 * effectiveModulus * std::sqrt(effectiveRadius * overlap);
+    return 2.0 * effectiveModulus * lanes::laneSqrt(effectiveRadius * overlap);
+}
+
+/// The factor 2 sqrt(5/6) beta of the Hertz damping coefficient (beta from e) [-].
+inline Real hertzDampingFactor(Real beta)
+{
+    return 2.0 * std::sqrt(5.0 / 6.0) * beta;
 }
 
 /// Hertz damping coefficient etaN [N s/m] = 2 sqrt(5/6) beta sqrt(Sn m*), beta from e.
 inline Real hertzDampingCoefficient(Real beta, Real normalStiffness, Real effectiveMass)
 {
-    return 2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(normalStiffness * effectiveMass);
+    return hertzDampingFactor(beta) * std::sqrt(normalStiffness * effectiveMass);
 }
 
 } // namespace veridem::dem

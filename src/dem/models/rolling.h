@@ -1,6 +1,7 @@
-// Rolling resistance torques (pure functions). Both oppose the angular velocity of the particle
-// RELATIVE TO ITS CONTACT PARTNER, w_rel = w_i - w_partner (for a wall: the wall's own angular
-// velocity), twisting part included, so that the torque is objective on rotating and curved walls
+// Rolling resistance torques (pure functions, templates over the number type T: double or a
+// vector of lanes, dem/lanes.h). Both oppose the angular velocity of the particle RELATIVE TO ITS
+// CONTACT PARTNER, w_rel = w_i - w_partner (for a wall: the wall's own angular velocity),
+// twisting part included, so that the torque is objective on rotating and curved walls
 // (BENCHMARKS 1b, 1c: without the twisting part the dish test locks at a wrong height).
 //
 // Type A, constant directional torque (Beer & Johnson 1976; Zhou et al. 1999; the paper's eq. 3):
@@ -17,47 +18,72 @@
 
 #include "core/hot.h"
 #include "core/vec3.h"
-
-#include <cmath>
+#include "dem/lanes.h"
 
 namespace veridem::dem
 {
 
 /// Type A torque on the particle [N m]. muR [m], Fn [N] (clipped >= 0), wRel [rad/s],
 /// rollingInertia I_r [kg m^2] (reduced moment of inertia of the pair), dt [s].
+template <class T>
+VERIDEM_HOT_INLINE lanes::Vec3Of<T> constantRollingTorqueOf(T muR, T normalForce,
+                                                            const lanes::Vec3Of<T>& relativeAngularVelocity,
+                                                            T rollingInertia, Real dt)
+{
+    using namespace lanes;
+    using V = Vec3Of<T>;
+    const T zero{};
+    const T w = laneSqrt(lengthSquared(relativeAngularVelocity));
+    MaskOf<T> none = w == zero;
+    none = none | (muR == zero);
+    none = none | (normalForce <= zero);
+    if (allLanes(none))
+        return V{};
+    // |M| / w = min(muR Fn / w, I_r / dt): one division after the square root instead of two, and
+    // a comparison instead of a call to libm's fmin (w > 0 and Fn > 0 here).
+    const T mobilised = muR * normalForce / w, stopping = rollingInertia / dt;
+    const T scale = -(mobilised < stopping ? mobilised : stopping);
+    return select(none, V{}, relativeAngularVelocity * scale);
+}
+
+template <class T> struct RollingSpringResultOf
+{
+    lanes::Vec3Of<T> torque; // on the particle [N m]
+    lanes::Vec3Of<T> spring; // updated elastic torque Mk [N m]
+    lanes::MaskOf<T> fullyMobilised{};
+};
+using RollingSpringResult = RollingSpringResultOf<Real>;
+
+/// Type C (EPSD) torque. kr [N m/rad], cr [N m s/rad], muR [m], Fn [N], spring Mk [N m].
+template <class T>
+VERIDEM_HOT_INLINE RollingSpringResultOf<T>
+epsdRollingTorqueOf(T kr, T cr, T muR, T normalForce, lanes::Vec3Of<T> spring,
+                    const lanes::Vec3Of<T>& relativeAngularVelocity, Real dt)
+{
+    using namespace lanes;
+    using V = Vec3Of<T>;
+    const T zero{};
+    spring = spring - relativeAngularVelocity * (kr * dt);
+    const T cap = muR * (normalForce > zero ? normalForce : zero); // mu max(Fn, 0), NaN -> 0
+    const T springLength = laneSqrt(lengthSquared(spring));
+    const MaskOf<T> mobilised = springLength > cap;
+    V capped = spring;
+    if (anyLane(mobilised))
+        capped = select(springLength > zero, spring * (cap / springLength), V{});
+    const V torque = select(mobilised, capped, spring - relativeAngularVelocity * cr);
+    return {torque, select(mobilised, capped, spring), mobilised};
+}
+
+/// Scalar forms (unit tests).
 inline Vec3 constantRollingTorque(Real muR, Real normalForce, const Vec3& relativeAngularVelocity,
                                   Real rollingInertia, Real dt)
 {
-    const Real w = length(relativeAngularVelocity);
-    if (w == 0 || muR == 0 || normalForce <= 0)
-        return Vec3{};
-    // |M| / w = min(muR Fn / w, I_r / dt): one division after the square root instead of two, and
-    // a plain comparison instead of a call to libm's fmin, which GCC does not inline (w > 0 and
-    // Fn > 0 here, so neither operand is NaN unless an input is).
-    const Real mobilised = muR * normalForce / w, stopping = rollingInertia / dt;
-    return relativeAngularVelocity * -(mobilised < stopping ? mobilised : stopping);
+    return constantRollingTorqueOf<Real>(muR, normalForce, relativeAngularVelocity, rollingInertia, dt);
 }
-
-struct RollingSpringResult
-{
-    Vec3 torque; // on the particle [N m]
-    Vec3 spring; // updated elastic torque Mk [N m]
-    bool fullyMobilised = false;
-};
-
-/// Type C (EPSD) torque. kr [N m/rad], cr [N m s/rad], muR [m], Fn [N], spring Mk [N m].
 inline RollingSpringResult epsdRollingTorque(Real kr, Real cr, Real muR, Real normalForce, Vec3 spring,
                                              const Vec3& relativeAngularVelocity, Real dt)
 {
-    spring -= kr * dt * relativeAngularVelocity;
-    const Real cap = muR * std::fmax(normalForce, 0.0);
-    const Real springLength = length(spring);
-    if (springLength > cap)
-    {
-        spring = springLength > 0 ? spring * (cap / springLength) : Vec3{};
-        return {spring, spring, true};
-    }
-    return {spring - cr * relativeAngularVelocity, spring, false};
+    return epsdRollingTorqueOf<Real>(kr, cr, muR, normalForce, spring, relativeAngularVelocity, dt);
 }
 
 } // namespace veridem::dem

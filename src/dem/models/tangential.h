@@ -1,5 +1,6 @@
 // Tangential force: linear spring with history and a Coulomb cap (Cundall & Strack 1979;
-// algorithm of BENCHMARKS 1a "robust algorithm" and 2.2).
+// algorithm of BENCHMARKS 1a "robust algorithm" and 2.2). Templates over the number type T
+// (double or a vector of lanes, dem/lanes.h): branches are selects, the same operations either way.
 //
 //   1. The stored spring xi is projected onto the current tangent plane and rescaled to keep its
 //      magnitude (the contact frame rotates, the stored elastic energy does not change).
@@ -8,57 +9,83 @@
 //   3. Trial force F* = -kt xi - etaT vt.
 //   4. If |F*| <= mu Fn the contact sticks: Ft = F*. Otherwise it slides: Ft = mu Fn F*/|F*| and
 //      the spring is reset to the cap, xi = -(Ft + etaT vt)/kt, so the dashpot sits inside the cap.
+//
+// With Hertz-Mindlin, kt = 8 G* sqrt(R* delta) changes with the overlap while xi is stored: the
+// force follows kt(delta) xi, so a shrinking overlap scales the stored force down with kt (the
+// rule LAMMPS calls `mindlin_rescale`; docs/models.md).
 #pragma once
 
 #include "core/hot.h"
 #include "core/vec3.h"
-
-#include <cmath>
+#include "dem/lanes.h"
 
 namespace veridem::dem
 {
 
-struct TangentialResult
+template <class T> struct TangentialResultOf
 {
-    Vec3 force;  // on the particle [N]
-    Vec3 spring; // updated spring displacement xi [m]
-    bool sliding = false;
+    lanes::Vec3Of<T> force;  // on the particle [N]
+    lanes::Vec3Of<T> spring; // updated spring displacement xi [m]
+    lanes::MaskOf<T> sliding{};
 };
+using TangentialResult = TangentialResultOf<Real>;
 
-/// Rotates the stored spring into the plane normal to `normal`, keeping its length.
-VERIDEM_HOT_INLINE Vec3 projectSpringToTangentPlane(const Vec3& spring, const Vec3& normal)
+/// Rotates the stored spring h [m] into the plane normal to the unit `normal`, keeping its length.
+template <class T>
+VERIDEM_HOT_INLINE lanes::Vec3Of<T> projectSpring(const lanes::Vec3Of<T>& spring,
+                                                  const lanes::Vec3Of<T>& normal)
 {
-    const Real oldLength2 = lengthSquared(spring);
-    if (oldLength2 == 0)
+    using namespace lanes;
+    using V = Vec3Of<T>;
+    const T oldLength2 = lengthSquared(spring);
+    const MaskOf<T> keep = oldLength2 == 0;
+    if (allLanes(keep))
         return spring;
-    Vec3 projected = spring - dot(spring, normal) * normal;
-    const Real newLength2 = lengthSquared(projected);
-    if (newLength2 == 0)
-        return Vec3{};
+    const V projected = spring - dot(spring, normal) * normal;
+    const T newLength2 = lengthSquared(projected);
     // Already in the plane (on a flat wall the normal is exact and so is the projection): the
     // scale below would be exactly 1. Skipping its division and square root gives the same bits
-    // and takes ~35 cycles off a single ball's step-to-step dependency chain (docs/performance.md).
-    if (newLength2 == oldLength2)
-        return projected;
-    return projected * std::sqrt(oldLength2 / newLength2);
+    // and shortens a single ball's step-to-step dependency chain (docs/performance.md).
+    if (allLanes(newLength2 == oldLength2))
+        return select(keep, spring, projected);
+    const V rescaled = projected * laneSqrt(oldLength2 / newLength2);
+    return select(keep, spring, select(newLength2 == 0, V{}, rescaled));
 }
 
-/// kt [N/m], etaT [N s/m], mu [-], normalForce Fn [N] (clipped to >= 0 here),
-/// tangentialVelocity vt [m/s] (in the tangent plane), dt [s].
-VERIDEM_HOT_INLINE TangentialResult coulombSpringForce(Real kt, Real etaT, Real mu, Real normalForce,
-                                                       Vec3 spring, const Vec3& normal,
-                                                       const Vec3& tangentialVelocity, Real dt)
+/// The Coulomb spring: kt [N/m], etaT [N s/m], mu [-], normalForce Fn [N] (clipped to >= 0 here),
+/// spring xi [m] (already in the tangent plane if kProjected), tangentialVelocity vt [m/s] (in the
+/// tangent plane), dt [s].
+template <class T, bool kProjected = false>
+VERIDEM_HOT_INLINE TangentialResultOf<T>
+coulombSpring(T kt, T etaT, T mu, T normalForce, lanes::Vec3Of<T> spring, const lanes::Vec3Of<T>& normal,
+              const lanes::Vec3Of<T>& tangentialVelocity, Real dt)
 {
-    spring = projectSpringToTangentPlane(spring, normal) + tangentialVelocity * dt;
-    const Vec3 trial = -kt * spring - etaT * tangentialVelocity;
-    const Real cap =
-        mu * (normalForce > 0 ? normalForce : 0.0); // mu max(Fn, 0), NaN -> 0 like fmax (inlined)
-    const Real trialLength2 = lengthSquared(trial);
-    if (trialLength2 <= cap * cap)
-        return {trial, spring, false};
-    const Vec3 force = trial * (cap / std::sqrt(trialLength2));
-    const Vec3 cappedSpring = kt > 0 ? -(force + etaT * tangentialVelocity) / kt : Vec3{};
-    return {force, cappedSpring, true};
+    using namespace lanes;
+    using V = Vec3Of<T>;
+    const T zero{};
+    if constexpr (!kProjected)
+        spring = projectSpring<T>(spring, normal);
+    spring = spring + tangentialVelocity * dt;
+    const V trial = -kt * spring - etaT * tangentialVelocity;
+    const T cap = mu * (normalForce > zero ? normalForce : zero); // mu max(Fn, 0), NaN -> 0
+    const T trialLength2 = lengthSquared(trial);
+    const MaskOf<T> sticks = trialLength2 <= cap * cap;
+    if (allLanes(sticks))
+        return {trial, spring, !sticks};
+    const V force = trial * (cap / laneSqrt(trialLength2));
+    const V cappedSpring = select(kt > zero, -(force + etaT * tangentialVelocity) / kt, V{});
+    return {select(sticks, trial, force), select(sticks, spring, cappedSpring), !sticks};
+}
+
+/// Scalar forms (unit tests, the time-step estimate).
+inline Vec3 projectSpringToTangentPlane(const Vec3& spring, const Vec3& normal)
+{
+    return projectSpring<Real>(spring, normal);
+}
+inline TangentialResult coulombSpringForce(Real kt, Real etaT, Real mu, Real normalForce, Vec3 spring,
+                                           const Vec3& normal, const Vec3& tangentialVelocity, Real dt)
+{
+    return coulombSpring<Real>(kt, etaT, mu, normalForce, spring, normal, tangentialVelocity, dt);
 }
 
 } // namespace veridem::dem
