@@ -427,14 +427,14 @@ struct LawBatch
     }
 };
 
-/// The law for the lanes [0, padded) of `b` with the models `Model`, results into `b`'s outputs
-/// for the lanes whose model is `index` (all lanes if `all`).
-template <class Model, class Lanes, bool kProjected>
-VERIDEM_HOT_INLINE void lawLanesOf(LawBatch& b, std::size_t padded, Real dt, const LawParams* uniform,
-                                   unsigned index, bool all)
+/// lawLanesOf with the parameters known to be uniform (kUniform) or per lane.
+template <class Model, class Lanes, bool kProjected, bool kAll, bool kUniform>
+VERIDEM_HOT_INLINE void lawLanesWith(LawBatch& b, std::size_t padded, Real dt, const LawParams* uniform,
+                                     unsigned index)
 {
     constexpr std::size_t kLanes = kWidth<Lanes>;
     constexpr bool kRolling = Model::rolling != RollingModel::None;
+    const LawParamsOf<Lanes> fixed = laneLawParams<Lanes>(kUniform ? uniform : nullptr, b.law, 0);
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
         const auto l = [&](const double* a) VERIDEM_INLINE_LAMBDA { return load<Lanes>(a + m); };
@@ -454,11 +454,14 @@ VERIDEM_HOT_INLINE void lawLanesOf(LawBatch& b, std::size_t padded, Real dt, con
             in.rollingInertia = l(b.rollingInertia);
             h.rollingSpring = {l(b.rx), l(b.ry), l(b.rz)};
         }
-        const ContactOutputOf<Lanes> out =
-            contactLaw<Model, Lanes, kProjected>(laneLawParams<Lanes>(uniform, b.law, m), in, h, dt);
+        ContactOutputOf<Lanes> out;
+        if constexpr (kUniform)
+            out = contactLaw<Model, Lanes, kProjected>(fixed, in, h, dt);
+        else
+            out = contactLaw<Model, Lanes, kProjected>(laneLawParams<Lanes>(nullptr, b.law, m), in, h, dt);
         const auto put = [&](double* a, const Lanes& v) VERIDEM_INLINE_LAMBDA
         {
-            if (all)
+            if constexpr (kAll)
                 store(a + m, v);
             else
                 for (std::size_t q = 0; q < kLanes; ++q)
@@ -484,6 +487,30 @@ VERIDEM_HOT_INLINE void lawLanesOf(LawBatch& b, std::size_t padded, Real dt, con
     }
 }
 
+/// The law for the lanes [0, padded) of `b` with the models `Model`, results into `b`'s outputs:
+/// all lanes (kAll), or the lanes whose model is `index`. Parameters: `uniform` in every lane, or
+/// per lane from b.law if it is null.
+template <class Model, class Lanes, bool kProjected, bool kAll>
+VERIDEM_HOT_INLINE void lawLanesOf(LawBatch& b, std::size_t padded, Real dt, const LawParams* uniform,
+                                   unsigned index)
+{
+    if (uniform)
+        lawLanesWith<Model, Lanes, kProjected, kAll, true>(b, padded, dt, uniform, index);
+    else
+        lawLanesWith<Model, Lanes, kProjected, kAll, false>(b, padded, dt, uniform, index);
+}
+
+/// lawLanes for a batch of several models: each model present runs over the whole batch, and
+/// each contact keeps its own model's results (out of line: it is rare).
+template <class Lanes, bool kProjected>
+[[gnu::noinline]] void mixedLawLanes(LawBatch& b, std::size_t padded, Real dt, const LawParams* uniform)
+{
+    forEachLawModel(b.models,
+                    [&](auto model, unsigned index) VERIDEM_INLINE_LAMBDA {
+                        lawLanesOf<decltype(model), Lanes, kProjected, false>(b, padded, dt, uniform, index);
+                    });
+}
+
 /// The contact law of the contacts [0, count) of `b` in lanes (the same law and bits as
 /// evaluateContact; a wall is a partner of infinite mass, so m* = m). kProjected: b's springs are
 /// already in the tangent plane (the pair kernel's input pass rotates them). Each model of the
@@ -502,11 +529,12 @@ VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const 
             for (double* a : b.law.fields())
                 a[m] = a[count - 1];
     }
-    const bool single = (b.models & (b.models - 1)) == 0;
-    forEachLawModel(b.models,
-                    [&](auto model, unsigned index) VERIDEM_INLINE_LAMBDA {
-                        lawLanesOf<decltype(model), Lanes, kProjected>(b, padded, dt, uniform, index, single);
-                    });
+    if ((b.models & (b.models - 1)) == 0) // one model: every lane takes its results
+        forEachLawModel(
+            b.models, [&](auto model, unsigned index) VERIDEM_INLINE_LAMBDA
+            { lawLanesOf<decltype(model), Lanes, kProjected, true>(b, padded, dt, uniform, index); });
+    else
+        mixedLawLanes<Lanes, kProjected>(b, padded, dt, uniform);
 }
 
 /// The laws of the contacts [0, padded) of `b`: the uniform law's model, or each contact's pair
@@ -532,12 +560,9 @@ VERIDEM_HOT_INLINE void setBatchLaws(LawBatch& b, std::size_t padded, const Unif
     b.rolling = (b.models & kRollingModels) != 0;
 }
 
-/// Contact m's law: its pair's parameters and model, unless the world has a single pair.
-VERIDEM_HOT_INLINE void addContactLaw(LawBatch& b, std::size_t m, const UniformLaw* uniform,
-                                      const PairParams& pp)
+/// Contact m's law, if the world has more than one pair: its pair's parameters and model.
+VERIDEM_HOT_INLINE void addContactLaw(LawBatch& b, std::size_t m, const PairParams& pp)
 {
-    if (uniform)
-        return;
     const unsigned model = lawModelIndex(pp);
     b.law.set(m, lawParams(pp));
     b.model[m] = static_cast<std::uint8_t>(model);
@@ -581,6 +606,17 @@ std::optional<UniformLaw> uniformLaw(const World& world)
         return std::nullopt;
     const PairParams& p = world.pairs(0, 0);
     return UniformLaw{lawParams(p), 1u << lawModelIndex(p)};
+}
+
+/// lawLanes on four (AVX2) or two lanes, the springs already in the tangent plane (the pair kernel).
+[[gnu::noinline]] VERIDEM_AVX2_TARGET void projectedLawAvx2(LawBatch& b, std::size_t count, Real dt,
+                                                            const LawParams* uniform)
+{
+    lawLanes<Lanes4, true>(b, count, dt, uniform);
+}
+[[gnu::noinline]] void projectedLawPortable(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
+{
+    lawLanes<Lanes2, true>(b, count, dt, uniform);
 }
 
 /// Adds contact q of batch `b` to the sink: force f [N] on i and -f on j, torques ti on i and tj
@@ -702,59 +738,72 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     }
 
     // 2. The law (lawLanes, as the wall contacts').
-    lawLanes<Lanes, true>(law, padded, dt, uniform ? &uniform->params : nullptr);
+    // (In its own function, as the walls': inlined, its register pressure spills the other passes.)
+    if constexpr (kWidth<Lanes> == 4)
+        projectedLawAvx2(law, padded, dt, uniform ? &uniform->params : nullptr);
+    else
+        projectedLawPortable(law, padded, dt, uniform ? &uniform->params : nullptr);
 
-    // 3. Forces and torques, scattered in lane (= slot) order; the health record.
-    for (std::size_t m = 0; m < padded; m += kLanes)
+    // 3. Forces and torques, scattered in lane (= slot) order; the health record. Compiled with and
+    // without rolling torques (kRolling), so that the common case carries none of their work.
+    const auto scatter = [&]<bool kRolling>() VERIDEM_INLINE_LAMBDA
     {
-        const Lanes nx = load<Lanes>(law.nx + m), ny = load<Lanes>(law.ny + m), nz = load<Lanes>(law.nz + m);
-        const Lanes normalForce = load<Lanes>(law.normalForce + m), ftx = load<Lanes>(law.ftx + m),
-                    fty = load<Lanes>(law.fty + m), ftz = load<Lanes>(law.ftz + m);
-        const Lanes leverI = load<Lanes>(leverIs + m), leverJ = load<Lanes>(leverJs + m);
-        const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
-        // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j (rolling = +0 without
-        // a rolling model, so -rolling = -0, as the scalar path's).
-        const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
-        Lanes rx = zero, ry = zero, rz = zero;
-        if (law.rolling)
+        for (std::size_t m = 0; m < padded; m += kLanes)
         {
-            rx = load<Lanes>(law.torqueX + m);
-            ry = load<Lanes>(law.torqueY + m);
-            rz = load<Lanes>(law.torqueZ + m);
-        }
-        const Lanes tix = rx - leverI * ttx, tiy = ry - leverI * tty, tiz = rz - leverI * ttz;
-        const Lanes tjx = -rx - leverJ * ttx, tjy = -ry - leverJ * tty, tjz = -rz - leverJ * ttz;
+            const Lanes nx = load<Lanes>(law.nx + m), ny = load<Lanes>(law.ny + m),
+                        nz = load<Lanes>(law.nz + m);
+            const Lanes normalForce = load<Lanes>(law.normalForce + m), ftx = load<Lanes>(law.ftx + m),
+                        fty = load<Lanes>(law.fty + m), ftz = load<Lanes>(law.ftz + m);
+            const Lanes leverI = load<Lanes>(leverIs + m), leverJ = load<Lanes>(leverJs + m);
+            const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
+            // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j (rolling = +0 without
+            // a rolling model, so -rolling = -0, as the scalar path's).
+            const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
+            Lanes rx = zero, ry = zero, rz = zero;
+            if constexpr (kRolling)
+            {
+                rx = load<Lanes>(law.torqueX + m);
+                ry = load<Lanes>(law.torqueY + m);
+                rz = load<Lanes>(law.torqueZ + m);
+            }
+            const Lanes tix = rx - leverI * ttx, tiy = ry - leverI * tty, tiz = rz - leverI * ttz;
+            const Lanes tjx = -rx - leverJ * ttx, tjy = -ry - leverJ * tty, tjz = -rz - leverJ * ttz;
 
-        // Scatter: one (x, y, z, 0) vector per contact and sum.
-        Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
-        transpose(fx, fy, fz, force);
-        transpose(tix, tiy, tiz, torqueI);
-        transpose(tjx, tjy, tjz, torqueJ);
-        transpose(load<Lanes>(law.springX + m), load<Lanes>(law.springY + m), load<Lanes>(law.springZ + m),
-                  spring);
-        const std::size_t lanes = std::min(kLanes, count - m);
-        if (law.rolling && sink.rolling)
-            for (std::size_t l = 0; l < lanes; ++l)
-                sink.rolling[b.candidate[m + l]] = {law.rollingX[m + l], law.rollingY[m + l],
-                                                    law.rollingZ[m + l]};
-        if (lanes == kLanes) // (a constant trip count: unrolled, every lane index a constant)
-        {
+            // Scatter: one (x, y, z, 0) vector per contact and sum.
+            Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
+            transpose(fx, fy, fz, force);
+            transpose(tix, tiy, tiz, torqueI);
+            transpose(tjx, tjy, tjz, torqueJ);
+            transpose(load<Lanes>(law.springX + m), load<Lanes>(law.springY + m),
+                      load<Lanes>(law.springZ + m), spring);
+            const std::size_t lanes = std::min(kLanes, count - m);
+            if (kRolling && sink.rolling)
+                for (std::size_t l = 0; l < lanes; ++l)
+                    sink.rolling[b.candidate[m + l]] = {law.rollingX[m + l], law.rollingY[m + l],
+                                                        law.rollingZ[m + l]};
+            if (lanes == kLanes) // (a constant trip count: unrolled, every lane index a constant)
+            {
 #pragma GCC unroll 4
-            for (std::size_t l = 0; l < kLanes; ++l)
-                scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
-        }
-        else
-            for (std::size_t l = 0; l < lanes; ++l)
-                scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
+                for (std::size_t l = 0; l < kLanes; ++l)
+                    scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
+            }
+            else
+                for (std::size_t l = 0; l < lanes; ++l)
+                    scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
 
-        // The health record, in lane order. One comparison first: the running ratio only grows,
-        // so a lane that does not exceed it now cannot exceed it after an earlier lane's update.
-        const Lanes overlap = load<Lanes>(law.overlap + m), minRadius = load<Lanes>(minRadii + m);
-        if (anyLane(overlap > worst.ratio * minRadius))
-            for (std::size_t l = 0; l < lanes; ++l)
-                if (worst.exceededBy(overlap[l], minRadius[l]))
-                    worst = {overlap[l] / minRadius[l], b.i[m + l], true};
-    }
+            // The health record, in lane order. One comparison first: the running ratio only grows,
+            // so a lane that does not exceed it now cannot exceed it after an earlier lane's update.
+            const Lanes overlap = load<Lanes>(law.overlap + m), minRadius = load<Lanes>(minRadii + m);
+            if (anyLane(overlap > worst.ratio * minRadius))
+                for (std::size_t l = 0; l < lanes; ++l)
+                    if (worst.exceededBy(overlap[l], minRadius[l]))
+                        worst = {overlap[l] / minRadius[l], b.i[m + l], true};
+        }
+    };
+    if (law.rolling)
+        scatter.template operator()<true>();
+    else
+        scatter.template operator()<false>();
 }
 
 VERIDEM_AVX2_TARGET void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
@@ -770,12 +819,13 @@ void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std
     pairContactsLanes<Lanes2>(world, sink, dt, count, worst, b, uniform);
 }
 
-VERIDEM_AVX2_TARGET void wallContactsAvx2(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
+[[gnu::noinline]] VERIDEM_AVX2_TARGET void wallContactsAvx2(LawBatch& b, std::size_t count, Real dt,
+                                                            const LawParams* uniform)
 {
     lawLanes<Lanes4, false>(b, count, dt, uniform);
 }
 
-void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
+[[gnu::noinline]] void wallContactsPortable(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
 {
     lawLanes<Lanes2, false>(b, count, dt, uniform);
 }
@@ -1437,7 +1487,8 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
         b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass,
                     list.tangentialSpring[k]);
-        addContactLaw(b, m, uniform, world.pairs(p.material[i], wall.material));
+        if (!uniform)
+            addContactLaw(b, m, world.pairs(p.material[i], wall.material));
         if (!uniform || uniform->models != 1u) // (as wallContactScalar)
         {
             in.rollingInertia = in.spinInertia + p.mass[i] * p.radius[i] * p.radius[i];
@@ -1492,6 +1543,27 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
     return true;
 }
 
+/// The inputs beyond the linear law's of the plane-wall contacts [0, count) of `b` (as
+/// wallContactInput and wallContactScalar: a plane's R* is r), out of the hot loop.
+[[gnu::noinline]] void planeExtraInputs(const World& world, const PlaneFrame* frames, LawBatch& b,
+                                        std::size_t count)
+{
+    const ParticleStore& p = world.particles;
+    const WallContactList& list = world.wallContacts;
+    for (std::size_t q = 0; q < count; ++q)
+    {
+        const std::uint32_t i = b.particle[q];
+        const std::size_t k = b.slot[q];
+        const Real r = p.radius[i];
+        ContactInput in;
+        in.relativeAngularVelocity = p.angularVelocity[i] - frames[list.wall[k]].angularVelocity;
+        in.effectiveRadius = r;
+        in.spinInertia = 1.0 / p.invInertia[i];
+        in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
+        b.setRollingInputs(q, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
+    }
+}
+
 /// wallForcesInLanes for plane walls (frames from planeFrames), the wall's part of wallGap and
 /// wallSurfaceVelocity taken from its frame: the same operations on the same values, so the same
 /// bits. Inlined into an instruction-set variant below (three-operand AVX encodings of the same
@@ -1524,7 +1596,13 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     const auto run = [&]() __attribute__((always_inline))
     {
         finishBatchLaws(b, uniform);
-        lawLanes<Lanes, false>(b, m, dt, uniform ? &uniform->params : nullptr);
+        if (extraInputs)
+            planeExtraInputs(world, frames, b, m);
+        // (The law in its own function: inlined here, its register pressure spilled this loop.)
+        if constexpr (kWidth<Lanes> == 4)
+            wallContactsAvx2(b, m, dt, uniform ? &uniform->params : nullptr);
+        else
+            wallContactsPortable(b, m, dt, uniform ? &uniform->params : nullptr);
         for (std::size_t q = 0; q < m; ++q)
         {
             const std::uint32_t i = b.particle[q];
@@ -1577,16 +1655,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             frame.velocity + cross(frame.angularVelocity, midStepContactPoint - frame.axis);
         const Vec3 relativeVelocity = v + cross(w, arm) - surfaceVelocity;
         b.setInputs(m, k, i, frame.normal, overlap, relativeVelocity, mass[i], spring[k]);
-        addContactLaw(b, m, uniform, world.pairs(p.material[i], frame.material));
-        if (extraInputs) // (as wallContactInput and wallContactScalar; a plane's R* is r)
-        {
-            ContactInput in;
-            in.relativeAngularVelocity = w - frame.angularVelocity;
-            in.effectiveRadius = r;
-            in.spinInertia = 1.0 / p.invInertia[i];
-            in.rollingInertia = in.spinInertia + mass[i] * r * r;
-            b.setRollingInputs(m, in, rolling ? list.rollingSpring[k] : Vec3{});
-        }
+        if (!uniform)
+            addContactLaw(b, m, world.pairs(p.material[i], frame.material));
         if (++m == kBatch)
             run();
     }

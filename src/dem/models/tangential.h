@@ -19,6 +19,8 @@
 #include "core/vec3.h"
 #include "dem/lanes.h"
 
+#include <type_traits>
+
 namespace veridem::dem
 {
 
@@ -39,15 +41,19 @@ VERIDEM_HOT_INLINE lanes::Vec3Of<T> projectSpring(const lanes::Vec3Of<T>& spring
     using V = Vec3Of<T>;
     const T oldLength2 = lengthSquared(spring);
     const MaskOf<T> keep = oldLength2 == 0;
-    if (allLanes(keep))
-        return spring;
+    constexpr bool kScalar = std::is_same_v<T, Real>;
+    if constexpr (kScalar)
+        if (keep)
+            return spring;
     const V projected = spring - dot(spring, normal) * normal;
     const T newLength2 = lengthSquared(projected);
     // Already in the plane (on a flat wall the normal is exact and so is the projection): the
     // scale below would be exactly 1. Skipping its division and square root gives the same bits
-    // and shortens a single ball's step-to-step dependency chain (docs/performance.md).
-    if (allLanes(newLength2 == oldLength2))
-        return select(keep, spring, projected);
+    // and shortens a single ball's step-to-step dependency chain (docs/performance.md). (Lanes
+    // compute the rescale: a test of every lane costs more than it saves there.)
+    if constexpr (kScalar)
+        if (newLength2 == oldLength2)
+            return projected;
     const V rescaled = projected * laneSqrt(oldLength2 / newLength2);
     return select(keep, spring, select(newLength2 == 0, V{}, rescaled));
 }
