@@ -21,6 +21,7 @@
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
+#include "exec/thread_pool.h"
 
 #include <algorithm>
 #include <charconv>
@@ -35,10 +36,6 @@
 #include <sys/resource.h>
 #include <unistd.h> // isatty
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 using namespace veridem;
 using namespace veridem::dem;
@@ -242,12 +239,7 @@ int run(int argc, char** argv)
                     bench::kWholeCoreAdds);
         return 0;
     }
-#ifdef _OPENMP
-    omp_set_num_threads(o.threads);
-#else
-    if (o.threads != 1)
-        std::fprintf(stderr, "veridem_bench: built without OpenMP; running on one thread\n");
-#endif
+    exec::setThreads(o.threads);
     const double residentBefore = currentResidentBytes();
     const bool single = o.scene == "turntable";
     const Real dt = 1e-5;

@@ -1,0 +1,55 @@
+#!/bin/sh
+# Two threads against one on the settled 20k bed, on a quiet machine and with one other CPU-bound
+# process running (`yes > /dev/null`), in short interleaved runs (docs/performance.md, "Threads on
+# a shared machine").
+#
+#   bench/threads_under_load.sh [BUILD_DIR] [ROUNDS] [STEPS]   (defaults: build/release, 4, 3000)
+#
+# Each round runs 1 thread, then 2 threads, in the quiet condition and then with the `yes`
+# process, and prints each rate with the load average read just before it, and the round's
+# 2-thread / 1-thread ratio in each condition. VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench
+# runs that build too, right after this one, in every slot (an A/B pair in the same minutes).
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/.." && pwd)
+build=${1:-$root/build/release}
+rounds=${2:-4}
+steps=${3:-3000}
+input=${VERIDEM_SHARED_BENCH_DIR:-$root/../shared/bench}/settled_bed_20k.xyz
+bench="$build/bench/veridem_bench"
+baseline=${VERIDEM_BASELINE_BENCH:-}
+
+rate() { # bench binary, threads -> whole-run particle-steps/s
+  "$1" --steps "$steps" --threads "$2" --file "$input" |
+    awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}'
+}
+load() { cut -d' ' -f1 /proc/loadavg; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
+
+hog=""
+stop_hog() { if [ -n "$hog" ]; then kill "$hog" 2> /dev/null; wait "$hog" 2> /dev/null; hog=""; fi; }
+trap stop_hog EXIT INT TERM
+
+echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, $steps steps a run"
+for r in $(seq "$rounds"); do
+  for condition in quiet loaded; do
+    if [ "$condition" = loaded ]; then
+      yes > /dev/null &
+      hog=$!
+      sleep 1
+    fi
+    line="round $r, $condition:"
+    for name in this baseline; do
+      b=$bench
+      if [ "$name" = baseline ]; then
+        [ -n "$baseline" ] || continue
+        b=$baseline
+      fi
+      l1=$(load); r1=$(rate "$b" 1)
+      l2=$(load); r2=$(rate "$b" 2)
+      line="$line  $name 1t $r1 (load $l1) 2t $r2 (load $l2) ratio $(ratio "$r2" "$r1");"
+    done
+    stop_hog
+    echo "$line"
+  done
+done
