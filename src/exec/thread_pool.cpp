@@ -30,6 +30,7 @@ namespace
 
 constexpr std::size_t kCacheLine = 64;
 
+std::atomic<std::int64_t> spin{kSpinNanoseconds};
 std::atomic<int> processThreads{0};   // 0: not set yet (availableCpus())
 thread_local int overrideThreads = 0; // 0: no override on this thread
 
@@ -81,7 +82,7 @@ class Pool
         claimAndRun(0, participants(), g);
         std::uint32_t done = completed_.load(std::memory_order_acquire);
         while (done != slots)
-            done = waitWhileEqual(completed_, done, callerSleeping_, kSpinNanoseconds);
+            done = waitWhileEqual(completed_, done, callerSleeping_, spin.load(std::memory_order_relaxed));
     }
 
   private:
@@ -129,7 +130,7 @@ class Pool
     {
         for (;;)
         {
-            seen = waitWhileEqual(generation_, seen, workersSleeping_, kSpinNanoseconds);
+            seen = waitWhileEqual(generation_, seen, workersSleeping_, spin.load(std::memory_order_relaxed));
             if (stop_.load(std::memory_order_relaxed))
                 return;
             claimAndRun(index, p, seen);
@@ -165,6 +166,18 @@ Shared& shared()
 }
 
 } // namespace
+
+void setSpinNanoseconds(std::int64_t ns)
+{
+    if (ns < 0 || ns > 10'000'000)
+        throw std::invalid_argument("spin must be from 0 to 1e7 ns, got " + std::to_string(ns));
+    spin.store(ns, std::memory_order_relaxed);
+}
+
+std::int64_t spinNanoseconds()
+{
+    return spin.load(std::memory_order_relaxed);
+}
 
 void setThreads(int n)
 {

@@ -10,7 +10,7 @@
 // thread runs a chunk never changes what the chunk computes: callers write per-chunk results and
 // combine them in chunk order, so results are the same bits for any thread count.
 //
-// Waiting. A thread with nothing to do spins for at most kSpinNanoseconds (a pause instruction per
+// Waiting. A thread with nothing to do spins for at most spinNanoseconds() (a pause instruction per
 // check), then blocks in the kernel (std::atomic::wait: a futex on Linux) until it is woken. The
 // spin catches the next parallel loop of a step, microseconds away, without a system call; the
 // block bounds what a waiting thread costs when its peer has been preempted (a machine with more
@@ -24,8 +24,15 @@
 namespace veridem::exec
 {
 
-/// How long a waiting thread spins before it blocks [ns].
+/// How long a waiting thread spins before it blocks, by default [ns].
 inline constexpr std::int64_t kSpinNanoseconds = 5000;
+
+/// Sets how long a waiting thread spins before it blocks [ns] (0: block at once; at most 1e7).
+/// Default: kSpinNanoseconds. Takes effect at the next wait.
+void setSpinNanoseconds(std::int64_t ns);
+
+/// The spin of setSpinNanoseconds [ns].
+std::int64_t spinNanoseconds();
 
 /// The largest thread count setThreads accepts.
 inline constexpr int kMaxThreads = 256;

@@ -115,7 +115,7 @@ TEST(ThreadPool, ManyJoinsWithSpinningAndSleepingWorkers)
     for (int round = 0; round < 20000; ++round)
     {
         if (round % 1000 == 0)
-            std::this_thread::sleep_for(std::chrono::microseconds(3 * kSpinNanoseconds / 1000));
+            std::this_thread::sleep_for(std::chrono::microseconds(3 * spinNanoseconds() / 1000 + 1));
         run(3, [&](int c) { sum += c + 1; });
         expected += 6;
     }
