@@ -5,10 +5,11 @@
 #
 #   bench/threads_under_load.sh [BUILD_DIR] [ROUNDS] [STEPS]   (defaults: build/release, 4, 3000)
 #
-# Each round runs 1 thread, then 2 threads, in the quiet condition and then with the `yes`
-# process, and prints each rate with the load average read just before it, and the round's
-# 2-thread / 1-thread ratio in each condition. VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench
-# runs that build too, right after this one, in every slot (an A/B pair in the same minutes).
+# Each round runs, in the quiet condition and then with the `yes` process, 1, 2, 2 and 1 threads
+# (so that a drift of the machine's load within the round weighs on both counts alike), and
+# prints each rate with the 1-minute load average read just before it, and the round's ratio of
+# the two 2-thread rates' sum to the two 1-thread rates' sum. VERIDEM_BASELINE_BENCH=path/to/
+# another/veridem_bench runs that build the same way, right after this one, in every slot.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
@@ -24,7 +25,6 @@ rate() { # bench binary, threads -> whole-run particle-steps/s
     awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}'
 }
 load() { cut -d' ' -f1 /proc/loadavg; }
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
 
 hog=""
 stop_hog() { if [ -n "$hog" ]; then kill "$hog" 2> /dev/null; wait "$hog" 2> /dev/null; hog=""; fi; }
@@ -47,7 +47,10 @@ for r in $(seq "$rounds"); do
       fi
       l1=$(load); r1=$(rate "$b" 1)
       l2=$(load); r2=$(rate "$b" 2)
-      line="$line  $name 1t $r1 (load $l1) 2t $r2 (load $l2) ratio $(ratio "$r2" "$r1");"
+      l3=$(load); r3=$(rate "$b" 2)
+      l4=$(load); r4=$(rate "$b" 1)
+      line="$line  $name 1t $r1 (load $l1) 2t $r2 (load $l2) 2t $r3 (load $l3) 1t $r4 (load $l4)"
+      line="$line ratio $(awk -v a="$r2" -v b="$r3" -v c="$r1" -v d="$r4" 'BEGIN {printf "%.2f", (a + b) / (c + d)}');"
     done
     stop_hog
     echo "$line"

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -105,21 +107,28 @@ TEST(ThreadPool, AnOverrideOfOneRunsEveryChunkOnTheCallingThread)
 }
 
 /// Many joins in a row, some right after the last (the workers still spinning), some after a
-/// pause longer than the spin (the workers asleep): a lost wake-up would hang here (CTest's
-/// timeout), a lost or repeated chunk would miscount.
+/// pause longer than the spin (the workers asleep), and with no spin at all (every wait blocks):
+/// a lost wake-up would hang here (CTest's timeout), a lost or repeated chunk would miscount.
 TEST(ThreadPool, ManyJoinsWithSpinningAndSleepingWorkers)
 {
     const ThreadCountOverride loops(3);
-    std::atomic<long> sum{0};
-    long expected = 0;
-    for (int round = 0; round < 20000; ++round)
+    const std::int64_t defaultSpin = spinNanoseconds();
+    for (const std::int64_t spin : {defaultSpin, std::int64_t{0}})
     {
-        if (round % 1000 == 0)
-            std::this_thread::sleep_for(std::chrono::microseconds(3 * spinNanoseconds() / 1000 + 1));
-        run(3, [&](int c) { sum += c + 1; });
-        expected += 6;
+        setSpinNanoseconds(spin);
+        std::atomic<long> sum{0};
+        long expected = 0;
+        for (int round = 0; round < 20000; ++round)
+        {
+            if (round % 1000 == 0)
+                std::this_thread::sleep_for(std::chrono::microseconds(3 * defaultSpin / 1000 + 1));
+            run(3, [&](int c) { sum += c + 1; });
+            expected += 6;
+        }
+        EXPECT_EQ(sum.load(), expected) << "spin " << spin << " ns";
     }
-    EXPECT_EQ(sum.load(), expected);
+    setSpinNanoseconds(defaultSpin);
+    EXPECT_THROW(setSpinNanoseconds(-1), std::invalid_argument);
 }
 
 } // namespace
