@@ -10,6 +10,11 @@
 # prints each rate with the 1-minute load average read just before it, and the round's ratio of
 # the two 2-thread rates' sum to the two 1-thread rates' sum. VERIDEM_BASELINE_BENCH=path/to/
 # another/veridem_bench runs that build the same way, right after this one, in every slot.
+# VERIDEM_QUIET_RT=1 runs the quiet condition's runs under `chrt -f 10` (real-time priority; needs
+# root or CAP_SYS_NICE): on a machine that other users keep busy, the benchmark's threads then
+# preempt everyone else's, which stands in for idle cores (the kernel still keeps 5 % of each
+# second for other work: /proc/sys/kernel/sched_rt_runtime_us). The condition with `yes` never
+# uses it (`yes` would not run).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
@@ -21,7 +26,7 @@ bench="$build/bench/veridem_bench"
 baseline=${VERIDEM_BASELINE_BENCH:-}
 
 rate() { # bench binary, threads -> whole-run particle-steps/s
-  "$1" --steps "$steps" --threads "$2" --file "$input" |
+  $rt "$1" --steps "$steps" --threads "$2" --file "$input" |
     awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}'
 }
 load() { cut -d' ' -f1 /proc/loadavg; }
@@ -33,12 +38,14 @@ trap stop_hog EXIT INT TERM
 echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, $steps steps a run"
 for r in $(seq "$rounds"); do
   for condition in quiet loaded; do
+    rt=""
+    [ "$condition" = quiet ] && [ -n "${VERIDEM_QUIET_RT:-}" ] && rt="chrt -f 10"
     if [ "$condition" = loaded ]; then
       yes > /dev/null &
       hog=$!
       sleep 1
     fi
-    line="round $r, $condition:"
+    line="round $r, $condition${rt:+ (chrt -f 10)}:"
     for name in this baseline; do
       b=$bench
       if [ "$name" = baseline ]; then

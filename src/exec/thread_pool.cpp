@@ -31,6 +31,16 @@ namespace
 constexpr std::size_t kCacheLine = 64;
 
 std::atomic<std::int64_t> spin{kSpinNanoseconds};
+
+std::int64_t mostSpin()
+{
+    return spin.load(std::memory_order_relaxed);
+}
+
+std::int64_t leastSpin()
+{
+    return std::min(kLeastSpinNanoseconds, mostSpin());
+}
 std::atomic<int> processThreads{0};   // 0: not set yet (availableCpus())
 thread_local int overrideThreads = 0; // 0: no override on this thread
 
@@ -82,7 +92,7 @@ class Pool
         claimAndRun(0, participants(), g);
         std::uint32_t done = completed_.load(std::memory_order_acquire);
         while (done != slots)
-            done = waitWhileEqual(completed_, done, callerSleeping_, spin.load(std::memory_order_relaxed));
+            done = waitWhileEqual(completed_, done, callerSleeping_, callerSpin_, leastSpin(), mostSpin());
     }
 
   private:
@@ -128,9 +138,10 @@ class Pool
     /// Worker `index` of a pool of `p` participants, last job seen: `seen`.
     void work(int index, int p, std::uint32_t seen)
     {
+        SpinBudget budget;
         for (;;)
         {
-            seen = waitWhileEqual(generation_, seen, workersSleeping_, spin.load(std::memory_order_relaxed));
+            seen = waitWhileEqual(generation_, seen, workersSleeping_, budget, leastSpin(), mostSpin());
             if (stop_.load(std::memory_order_relaxed))
                 return;
             claimAndRun(index, p, seen);
@@ -149,6 +160,7 @@ class Pool
     std::atomic<std::uint32_t> workersSleeping_{0};
     alignas(kCacheLine) std::atomic<std::uint32_t> completed_{0};
     std::atomic<std::uint32_t> callerSleeping_{0};
+    SpinBudget callerSpin_; // (of the thread that holds the pool)
 };
 
 /// The pool, and a flag held by the thread whose job it runs: a second caller (a nested call,

@@ -10,12 +10,15 @@
 // thread runs a chunk never changes what the chunk computes: callers write per-chunk results and
 // combine them in chunk order, so results are the same bits for any thread count.
 //
-// Waiting. A thread with nothing to do spins for at most spinNanoseconds() (a pause instruction per
-// check), then blocks in the kernel (std::atomic::wait: a futex on Linux) until it is woken. The
-// spin catches the next parallel loop of a step, microseconds away, without a system call; the
-// block bounds what a waiting thread costs when its peer has been preempted (a machine with more
-// runnable threads than cores): one spin, not a scheduler quantum of spinning at every join. The
-// policy is the program's, not the environment's (no variable is read).
+// Waiting. A thread with nothing to do spins (a pause instruction per check), then blocks in the
+// kernel (std::atomic::wait: a futex on Linux) until it is woken. How long it spins adapts to its
+// own recent waits (exec/wait.h, SpinBudget): up to spinNanoseconds() (100 us by default) while
+// its waits end within that (the other threads are running and finish a few tens of microseconds
+// apart: a futex wake-up, ~20 us here, would cost more), and kLeastSpinNanoseconds (5 us) after a
+// longer wait (the awaited thread was preempted, on a machine with more runnable threads than
+// cores: the waiting thread then gives its core up almost at once, instead of spinning a
+// scheduler quantum away at every join). The policy is the program's, not the environment's (no
+// variable is read).
 #pragma once
 
 #include <cstdint>
@@ -24,14 +27,18 @@
 namespace veridem::exec
 {
 
-/// How long a waiting thread spins before it blocks, by default [ns].
-inline constexpr std::int64_t kSpinNanoseconds = 5000;
+/// The longest a waiting thread spins before it blocks, by default [ns].
+inline constexpr std::int64_t kSpinNanoseconds = 100'000;
 
-/// Sets how long a waiting thread spins before it blocks [ns] (0: block at once; at most 1e7).
+/// The spin of a waiting thread after a wait longer than spinNanoseconds() [ns] (or
+/// spinNanoseconds() if that is less).
+inline constexpr std::int64_t kLeastSpinNanoseconds = 5'000;
+
+/// Sets the longest a waiting thread spins before it blocks [ns] (0: block at once; at most 1e7).
 /// Default: kSpinNanoseconds. Takes effect at the next wait.
 void setSpinNanoseconds(std::int64_t ns);
 
-/// The spin of setSpinNanoseconds [ns].
+/// The longest spin, as set by setSpinNanoseconds [ns].
 std::int64_t spinNanoseconds();
 
 /// The largest thread count setThreads accepts.
