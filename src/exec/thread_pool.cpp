@@ -7,7 +7,6 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
 #include <sched.h>
 #include <stdexcept>
 #include <string>
@@ -30,8 +29,9 @@ namespace
 
 constexpr std::size_t kCacheLine = 64;
 
-std::atomic<std::int64_t> spin{kSpinNanoseconds};
+std::atomic<std::int64_t> spin{kSpinNanoseconds}; // setSpinNanoseconds
 
+/// The bounds of a waiter's spin (SpinBudget) [ns].
 std::int64_t mostSpin()
 {
     return spin.load(std::memory_order_relaxed);
@@ -41,6 +41,7 @@ std::int64_t leastSpin()
 {
     return std::min(kLeastSpinNanoseconds, mostSpin());
 }
+
 std::atomic<int> processThreads{0};   // 0: not set yet (availableCpus())
 thread_local int overrideThreads = 0; // 0: no override on this thread
 
