@@ -1,7 +1,7 @@
 // veridem_bench: the reference many-sphere benchmark of issue 5 (docs/performance.md).
 //
 //   veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S] [--threads T]
-//                 [--profile] [--repeat R] [--no-sort]
+//                 [--profile] [--repeat R] [--no-sort] [--spin-ns NS]
 //   veridem_bench --core-probe
 //
 // bed / gas: spheres read from an .xyz file (x y z per line, metres), radius 1 mm, density 2500,
@@ -15,12 +15,14 @@
 // The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
 // stage and the kinetic energy at the end. Nothing is written during the timed loop. A 12 ms probe
-// before and after it (core_probe.h) shows whether the run had a whole CPU core.
+// before and after it (core_probe.h) shows whether the run had a whole CPU core. --spin-ns: how
+// long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
 #include "core_probe.h"
 #include "dem/forces.h"
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
+#include "exec/thread_pool.h"
 
 #include <algorithm>
 #include <charconv>
@@ -35,10 +37,6 @@
 #include <sys/resource.h>
 #include <unistd.h> // isatty
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 using namespace veridem;
 using namespace veridem::dem;
@@ -55,15 +53,16 @@ struct Options
     int threads = 1;
     int repeat = 1;
     bool profile = false;
-    bool sort = true;       // renumber particles in Morton order of cells before the run
-    bool probeOnly = false; // --core-probe: print one core probe (core_probe.h) and exit
+    bool sort = true;                     // renumber particles in Morton order of cells before the run
+    bool probeOnly = false;               // --core-probe: print one core probe (core_probe.h) and exit
+    long spinNs = exec::kSpinNanoseconds; // --spin-ns: the pool's spin before blocking [ns]
 };
 
 [[noreturn]] void usage()
 {
     std::fprintf(stderr,
                  "usage: veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S]\n"
-                 "                     [--threads T] [--repeat R] [--profile] [--no-sort]\n"
+                 "                     [--threads T] [--repeat R] [--profile] [--no-sort] [--spin-ns NS]\n"
                  "       veridem_bench --core-probe   (how much of a CPU core this process gets; no run)\n");
     std::exit(2);
 }
@@ -80,17 +79,19 @@ Options parse(int argc, char** argv)
                 usage();
             return argv[++a];
         };
-        // A whole positive integer, or a message naming the option.
-        auto count = [&]() -> long
+        // A whole number from `least` to 1e9, or a message naming the option.
+        auto number = [&](long least) -> long
         {
             const std::string text = value();
             long n = 0;
             const char* const last = text.data() + text.size();
             const auto [stop, error] = std::from_chars(text.data(), last, n);
-            if (error != std::errc() || stop != last || n < 1 || n > 1000000000L)
-                throw std::runtime_error(arg + ": expected a whole number from 1 to 1e9, got '" + text + "'");
+            if (error != std::errc() || stop != last || n < least || n > 1000000000L)
+                throw std::runtime_error(arg + ": expected a whole number from " + std::to_string(least) +
+                                         " to 1e9, got '" + text + "'");
             return n;
         };
+        auto count = [&] { return number(1); };
         if (arg == "--scene")
             o.scene = value();
         else if (arg == "--file")
@@ -101,6 +102,8 @@ Options parse(int argc, char** argv)
             o.steps = count();
         else if (arg == "--threads")
             o.threads = static_cast<int>(count());
+        else if (arg == "--spin-ns")
+            o.spinNs = number(0);
         else if (arg == "--repeat")
             o.repeat = static_cast<int>(count());
         else if (arg == "--no-sort")
@@ -242,12 +245,8 @@ int run(int argc, char** argv)
                     bench::kWholeCoreAdds);
         return 0;
     }
-#ifdef _OPENMP
-    omp_set_num_threads(o.threads);
-#else
-    if (o.threads != 1)
-        std::fprintf(stderr, "veridem_bench: built without OpenMP; running on one thread\n");
-#endif
+    exec::setThreads(o.threads);
+    exec::setSpinNanoseconds(o.spinNs);
     const double residentBefore = currentResidentBytes();
     const bool single = o.scene == "turntable";
     const Real dt = 1e-5;

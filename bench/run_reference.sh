@@ -20,17 +20,14 @@
 # another tenant's hardware thread shares it); `veridem_bench --core-probe` is run around each
 # LAMMPS and LIGGGHTS run as well, so that each figure says which state of the machine it was
 # measured in.
-# OpenMP waiting: GOMP_SPINCOUNT defaults to 20000 here (spin briefly, then sleep). With libgomp's
-# default long spin, a machine whose cores are busy with other work costs a scheduler quantum at
-# every barrier; with OMP_WAIT_POLICY=PASSIVE every barrier pays a futex wake-up (~30 us), which
-# halves the two-thread rate of short steps (the gas). Override either variable to compare.
+# veridem's threads wait by spinning a few microseconds, then blocking (src/exec/thread_pool.h):
+# the program sets it, no environment variable changes it.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
 build=${1:-$root/build/release}
 steps=${2:-10000}
 shared=${VERIDEM_SHARED_BENCH_DIR:-$root/../shared/bench}
-export GOMP_SPINCOUNT=${GOMP_SPINCOUNT:-20000}
 bench="$build/bench/veridem_bench"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -43,7 +40,7 @@ rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
   awk '/^Loop time of/ {printf "%.4g", $12 * $9 / $4}' "$1"
 }
 
-echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset} GOMP_SPINCOUNT=$GOMP_SPINCOUNT"
+echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 
 if [ -n "${VERIDEM_ROUNDS:-}" ]; then
   veridem_rate() { # bench binary, threads -> particle-steps/s of the whole run

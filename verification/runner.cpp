@@ -1,6 +1,7 @@
 #include "runner.h"
 
 #include "core/error.h"
+#include "exec/thread_pool.h"
 
 #include <algorithm>
 #include <atomic>
@@ -15,10 +16,6 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace veridem::verify
 {
@@ -175,10 +172,9 @@ int runCases(const RunRequest& request)
     std::atomic<std::size_t> next{0};
     const auto worker = [&]
     {
-#ifdef _OPENMP
-        if (jobs > 1)
-            omp_set_num_threads(1); // the cores are taken by the other cases
-#endif
+        // One thread per case's loops when cases run side by side: the cores are taken by the
+        // other cases.
+        const exec::ThreadCountOverride loops(jobs > 1 ? 1 : exec::threads());
         for (std::size_t k = next++; k < chosen.size(); k = next++)
         {
             Outcome o = runOne(k);

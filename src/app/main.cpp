@@ -1,8 +1,9 @@
 // veridem: the command-line program.
-//   veridem run SCENE [--out DIR]      run a scene file (DEM 3D or FEM/DEM 2D)
+//   veridem run SCENE [--out DIR] [--threads N]   run a scene file (DEM 3D or FEM/DEM 2D)
 //   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR] [--jobs N]
 #include "app/run_scene.h"
 #include "core/error.h"
+#include "exec/thread_pool.h"
 #include "io/toml_reader.h"
 #include "runner.h"
 
@@ -55,6 +56,14 @@ int main(int argc, char** argv)
     run->add_flag("--quiet", quiet, "no progress output");
     run->add_flag("--force-dt", runOptions.allowUnstableTimeStep,
                   "run even if dt exceeds the stability limit (a warning is printed)");
+    // Default: every CPU this process may use. A waiting thread blocks after a few microseconds
+    // (exec/thread_pool.h), so a second thread does not slow a run down on a busy machine.
+    int threads = veridem::exec::availableCpus();
+    run->add_option("--threads", threads,
+                    "threads of the DEM loops (default: the CPUs this process may run on; the same "
+                    "results on any count)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, veridem::exec::kMaxThreads));
 
     veridem::verify::RunRequest verifyRequest;
     bool list = false;
@@ -80,6 +89,7 @@ int main(int argc, char** argv)
         {
             runOptions.outDir = outDir;
             runOptions.progress = !quiet;
+            veridem::exec::setThreads(threads);
             return runCommand(runOptions);
         }
         if (list)

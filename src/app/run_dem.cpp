@@ -3,6 +3,7 @@
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "dem/time_step.h"
+#include "exec/thread_pool.h"
 #include "io/dem_scene.h"
 #include "io/particle_output.h"
 
@@ -145,9 +146,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %zu particles, %zu outputs in %s\n",
                 static_cast<unsigned long long>(totalSteps), scene.dt, world.time, world.particles.size(),
                 recorder.framesWritten(), options.outDir.string().c_str());
-    std::printf("veridem: wall time %.3f s, %.3g particle-steps/s, %zu neighbour rebuilds\n", wall,
-                wall > 0 ? double(totalSteps) * double(world.particles.size()) / wall : 0.0,
-                world.neighbors.rebuildCount());
+    std::printf(
+        "veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour rebuilds\n",
+        wall, exec::threads(), wall > 0 ? double(totalSteps) * double(world.particles.size()) / wall : 0.0,
+        world.neighbors.rebuildCount());
     return 0;
 }
 

@@ -1,11 +1,12 @@
 // Determinism across thread counts (STYLE 3.4, issue 5): the same input gives the same bits on
-// 1 and 2 threads after 1000 steps. Forces are summed per particle in an order fixed by the
+// 1, 2 and 3 threads after 1000 steps. Forces are summed per particle in an order fixed by the
 // particles' blocks and the slot order (neighbor_list.h), so the schedule cannot change the order
 // of any floating-point sum.
 #include "dem/forces.h"
 #include "dem/integrate.h"
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
+#include "exec/thread_pool.h"
 
 #include <gtest/gtest.h>
 
@@ -15,10 +16,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace veridem::dem
 {
@@ -67,12 +64,7 @@ World jostlingBox(bool sorted, int side = 13)
 /// weight alone (reproducible). `speeds`: the speeds to start from (one per thread), if given.
 World runOn(int threads, int steps, int side = 13, bool adapt = true, std::vector<double> speeds = {})
 {
-#ifdef _OPENMP
-    const int previous = omp_get_max_threads();
-    omp_set_num_threads(threads);
-#else
-    (void)threads;
-#endif
+    const exec::ThreadCountOverride loops(threads);
     World world = jostlingBox(true, side);
     world.pairSchedule.adapt = adapt;
     world.passSchedule.adapt = adapt;
@@ -80,9 +72,6 @@ World runOn(int threads, int steps, int side = 13, bool adapt = true, std::vecto
     world.passSchedule.speed = speeds;
     for (int s = 0; s < steps; ++s)
         step(world, 1e-5);
-#ifdef _OPENMP
-    omp_set_num_threads(previous);
-#endif
     return world;
 }
 
@@ -91,20 +80,23 @@ template <class V> bool sameBits(const std::vector<V>& a, const std::vector<V>& 
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(V)) == 0;
 }
 
-TEST(Determinism, OneAndTwoThreadsGiveTheSameBitsAfter1000Steps)
+TEST(Determinism, OneTwoAndThreeThreadsGiveTheSameBitsAfter1000Steps)
 {
     World one = runOn(1, 1000);
-    World two = runOn(2, 1000);
     ASSERT_GT(one.neighbors.size(), 0u);
     EXPECT_GT(one.health.maxOverlapRatio, 0.0); // contacts are active at the end
-    EXPECT_TRUE(sameBits(one.particles.position, two.particles.position));
-    EXPECT_TRUE(sameBits(one.particles.velocity, two.particles.velocity));
-    EXPECT_TRUE(sameBits(one.particles.angularVelocity, two.particles.angularVelocity));
-    EXPECT_TRUE(sameBits(one.particles.force, two.particles.force));
-    EXPECT_EQ(one.neighbors.activeSlots, two.neighbors.activeSlots);
-    EXPECT_TRUE(sameBits(one.neighbors.activeSpring, two.neighbors.activeSpring)); // the history
-    EXPECT_EQ(one.health.maxOverlapRatio, two.health.maxOverlapRatio);
-    EXPECT_EQ(one.health.worstParticle, two.health.worstParticle);
+    for (const int threads : {2, 3})
+    {
+        World other = runOn(threads, 1000);
+        EXPECT_TRUE(sameBits(one.particles.position, other.particles.position)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.velocity, other.particles.velocity)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.angularVelocity, other.particles.angularVelocity)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.force, other.particles.force)) << threads;
+        EXPECT_EQ(one.neighbors.activeSlots, other.neighbors.activeSlots) << threads;
+        EXPECT_TRUE(sameBits(one.neighbors.activeSpring, other.neighbors.activeSpring)) << threads; // history
+        EXPECT_EQ(one.health.maxOverlapRatio, other.health.maxOverlapRatio) << threads;
+        EXPECT_EQ(one.health.worstParticle, other.health.worstParticle) << threads;
+    }
 }
 
 /// Blocks are independent (block_partition.h), so any split of them among threads gives the same
@@ -114,9 +106,6 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameBitsAfter1000Steps)
 /// (300 steps: contacts open, close and slide by then).
 TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
 {
-#ifndef _OPENMP
-    GTEST_SKIP() << "built without OpenMP";
-#endif
     constexpr int side = 17, steps = 300;
     World one = runOn(1, steps, side);
     World two = runOn(2, steps, side, false);
@@ -180,22 +169,13 @@ TEST(Determinism, AdvanceGivesTheBitsOfStepCalls)
 {
     for (const int threads : {1, 2})
     {
-#ifdef _OPENMP
-        const int previous = omp_get_max_threads();
-        omp_set_num_threads(threads);
-#else
-        if (threads > 1)
-            continue;
-#endif
+        const exec::ThreadCountOverride loops(threads);
         World stepped = jostlingBox(true), advanced = jostlingBox(true); // (above kParallelThreshold)
         for (int s = 0; s < 300; ++s)
             step(stepped, 1e-5);
         EXPECT_EQ(advance(advanced, 1e-5, 137), 137u);
         EXPECT_EQ(advance(advanced, 1e-5, 1), 1u);
         EXPECT_EQ(advance(advanced, 1e-5, 162), 162u);
-#ifdef _OPENMP
-        omp_set_num_threads(previous);
-#endif
         EXPECT_EQ(advanced.stepCount, stepped.stepCount) << threads;
         EXPECT_EQ(advanced.time, stepped.time) << threads;
         EXPECT_TRUE(sameBits(advanced.particles.position, stepped.particles.position)) << threads;
