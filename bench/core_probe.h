@@ -7,7 +7,7 @@
 //   - eight independent chains run as many adds per cycle as the core's integer units give this
 //     thread: about 3.7 a cycle on an uncontended Zen 3 core with this loop (seen here at
 //     3.2 GHz), 2.2-2.8 when another hardware thread (another tenant's, on a shared machine) uses
-//     the same core; 4.8-5.1 on a Zen 5 core (session 15, one hardware thread per core).
+//     the same core; 4.8-5.1 on a Zen 5 core (one hardware thread per core).
 // Their ratio, adds per cycle, tells a run on a whole core from one on a shared core, which the
 // clock alone does not (the clock stayed at ~3.1 GHz while the one-ball step took 1.45x longer).
 #pragma once

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The measurements of docs/performance.md, in one session so that ratios are fair on a shared
+# The measurements of docs/performance.md, in one run so that ratios are fair on a shared
 # machine: for each scene (settled bed, gas) and each thread/rank count (1, 2), veridem, then
 # LAMMPS, then LIGGGHTS (if installed: apt-get install -y lammps liggghts), on the same input; then
 # the 1e6-sphere bed and the one-ball turntable.
@@ -7,7 +7,7 @@
 #   bench/run_reference.sh [BUILD_DIR] [STEPS]      (defaults: build/release, 10000)
 #
 # VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench also runs that build (e.g. an older commit)
-# on the bed (1 thread) and the turntable, for a before/after ratio in the same session.
+# on the bed (1 thread) and the turntable, for a before/after ratio in the same run.
 #
 # VERIDEM_ROUNDS=N runs, instead, N side-by-side rounds on the settled bed: veridem and LAMMPS back
 # to back on 1 thread/rank, then on 2, each round printing the ratio of its two adjacent runs (and

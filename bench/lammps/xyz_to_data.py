@@ -4,7 +4,7 @@
     xyz_to_data.py IN.xyz OUT.data [ZHI]
 
 Spheres of diameter 2 mm and density 2500 kg/m^3, box 0.1 x 0.1 m (SI units), z from 0 to ZHI
-(default: 0.02 m above the highest centre). Used by bench/lammps/run.sh (docs/performance.md).
+(default: 0.02 m above the highest centre). Used by bench/run_reference.sh (docs/performance.md).
 """
 import sys
 
