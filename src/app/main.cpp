@@ -11,7 +11,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <set>
 #include <string>
+#include <vector>
 
 #ifdef VERIDEM_HAVE_FDEM
 #include "fdem/scene_runner.h"
@@ -19,6 +21,22 @@
 
 namespace
 {
+
+/// Refuses a --label that no case carries (a typo would otherwise select nothing and pass).
+void checkLabels(const std::vector<std::string>& labels)
+{
+    std::set<std::string> known;
+    for (const auto& c : veridem::verify::registry())
+        known.insert(c.labels.begin(), c.labels.end());
+    for (const auto& l : labels)
+        if (!known.count(l))
+        {
+            std::string list;
+            for (const auto& k : known)
+                list += (list.empty() ? "" : ", ") + k;
+            throw veridem::InputError("unknown verification label '" + l + "' (known labels: " + list + ")");
+        }
+}
 
 int runCommand(const veridem::app::RunOptions& options)
 {
@@ -87,6 +105,7 @@ int main(int argc, char** argv)
             veridem::verify::listCases();
             return 0;
         }
+        checkLabels(verifyRequest.labels);
         verifyRequest.showProgress = !quiet;
         if (!jsonPath.empty())
             verifyRequest.jsonPath = jsonPath;

@@ -1,6 +1,7 @@
 #include "fdem/scene.h"
 
 #include "core/error.h"
+#include "fdem/body_overlap.h"
 #include "fdem/gmsh_reader.h"
 #include "fdem/mesher.h"
 #include "io/toml_reader.h"
@@ -249,6 +250,12 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
     }
     if (scene.bodies.empty())
         throw InputError(file + ": no [[body]] table");
+    {
+        std::vector<const TriangleMesh*> meshes;
+        for (const auto& body : scene.bodies)
+            meshes.push_back(&body.mesh);
+        checkBodiesApart(meshes, bodyNames, file);
+    }
 
     // [[boundary]]
     if (toml::array* boundaries = root["boundary"].as_array())

@@ -1,0 +1,120 @@
+// Input that once hung or reached undefined behaviour: the neighbour grid on non-finite and huge
+// positions, the lexical TOML check (refuses what toml++ 3.3.0 mishandles, accepts valid TOML),
+// and the derived-quantity range checks of the 3D scene reader.
+#include "core/error.h"
+#include "dem/neighbor_list.h"
+#include "io/dem_scene.h"
+#include "io/toml_guard.h"
+#include "io/toml_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace veridem;
+
+namespace
+{
+dem::ParticleStore twoSpheresAnd(Vec3 third)
+{
+    dem::ParticleStore p;
+    p.add({0, 0, 0}, {}, {}, 0.01, 2500, 0);
+    p.add({0.015, 0, 0}, {}, {}, 0.01, 2500, 0);
+    p.add(third, {}, {}, 0.01, 2500, 0);
+    return p;
+}
+
+std::string scene(const std::string& extra)
+{
+    return "[simulation]\ndt = 1e-5\nduration = 1e-4\n[[material]]\nname = \"m\"\ndensity = 2500\nkn = "
+           "1e5\n" +
+           extra;
+}
+} // namespace
+
+// The grid sizing used to loop forever or convert inf/NaN to an integer. A blown-up state must
+// only end the rebuild (the run's health check stops it); the finite pair is still found.
+TEST(Hardening, NeighbourGridSurvivesNonFiniteAndHugePositions)
+{
+    const Real inf = std::numeric_limits<Real>::infinity(), nan = std::numeric_limits<Real>::quiet_NaN();
+    for (const Vec3 third : {Vec3{inf, 0, 0}, Vec3{nan, 0, 0}, Vec3{1e308, -1e308, 0}, Vec3{nan, nan, nan}})
+    {
+        const dem::ParticleStore p = twoSpheresAnd(third);
+        dem::NeighborList list;
+        list.skin = 1e-3;
+        list.rebuild(p);
+        bool found = false;
+        for (std::size_t k = 0; k < list.size(); ++k)
+            found |= list.first[k] == 0 && list.second[k] == 1;
+        EXPECT_TRUE(found) << third.x;
+    }
+    dem::ParticleStore p;
+    p.add({nan, nan, nan}, {}, {}, 0.01, 2500, 0);
+    p.add({nan, 0, 0}, {}, {}, 0.01, 2500, 0);
+    dem::NeighborList list;
+    list.rebuild(p); // all positions NaN: one cell, returns
+}
+
+TEST(Hardening, TomlGuardAcceptsValidToml)
+{
+    const std::string valid = "# comment with non-ASCII: densit\xC3\xA9 \xE2\x89\xA4\n"
+                              "[simulation]\n"
+                              "name = \"caf\xC3\xA9 [[*a]]\" # r\xC3\xA9sum\xC3\xA9\n"
+                              "\"densit\xC3\xA9\" = 1\n"
+                              "text = '''\nline [[*x]]\n\xC3\xA9\n'''\n"
+                              "multi = \"\"\"\n\\\"\"\" still \xC3\xA9\n\"\"\"\n"
+                              "polygon = [\n[0, 0],\n  [1, 0], [0, 1]]\n"
+                              "inline = { a = [1, 2], b = \"]\" }\n"
+                              "[ a . \"b c\" . 'd\xC3\xA9' ]  # header with quoted keys\n"
+                              "[[ list ]]\n"
+                              "[[list]]\r\n";
+    EXPECT_NO_THROW(io::checkTomlText(valid, "t.toml"));
+    EXPECT_NO_THROW(io::parseText(valid, "t.toml"));
+}
+
+TEST(Hardening, TomlGuardRefusesWhatToml3MisreadsWithTheLine)
+{
+    auto message = [](const std::string& text)
+    {
+        try
+        {
+            io::checkTomlText(text, "t.toml");
+        }
+        catch (const InputError& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(message("a = 1\n\ndensit\xC3\xA9 = 2500\n").substr(0, 34),
+              "t.toml:3: non-ASCII character outs");
+    EXPECT_EQ(message("x = 1 \xC3\xA9\n").substr(0, 9), "t.toml:1:");
+    EXPECT_EQ(message("a = 1\n[[*a]]\n").substr(0, 34), "t.toml:2: a table header must be [");
+    EXPECT_EQ(message("[a.]\n").substr(0, 10), "t.toml:1: ");
+    EXPECT_EQ(message("[a] b = 1\n").substr(0, 10), "t.toml:1: ");
+    EXPECT_EQ(message("[a\n").substr(0, 10), "t.toml:1: ");
+    EXPECT_EQ(message("[[a]\n").substr(0, 10), "t.toml:1: ");
+    EXPECT_EQ(message("[t\xC3\xA9]\n").substr(0, 34), "t.toml:1: non-ASCII character outs");
+}
+
+TEST(Hardening, SceneRefusesOutOfRangeDerivedQuantities)
+{
+    auto read = [](const std::string& text) { io::readDemScene(io::parseText(text, "s.toml"), "s.toml"); };
+    EXPECT_NO_THROW(read(scene("[[sphere]]\nmaterial = \"m\"\nradius = 0.01\nposition = [0, 0, 0]\n")));
+    // radius 1e-120: mass 1e-356 kg underflows to zero
+    EXPECT_THROW(read(scene("[[sphere]]\nmaterial = \"m\"\nradius = 1e-120\nposition = [0, 0, 0]\n")),
+                 InputError);
+    EXPECT_THROW(read(scene("[[sphere]]\nmaterial = \"m\"\nradius = 1e200\nposition = [0, 0, 0]\n")),
+                 InputError);
+    EXPECT_THROW(read(scene("[[sphere]]\nmaterial = \"m\"\nradius = 0.01\nposition = [0, 0, 0]\n"
+                            "angular_velocity = [1e300, 0, 0]\n")),
+                 InputError);
+    // 1e8 m is 1e10 radii away
+    EXPECT_THROW(read(scene("[[sphere]]\nmaterial = \"m\"\nradius = 0.01\nposition = [0, 1e8, 0]\n")),
+                 InputError);
+    // a lattice box of 1e300 m is refused before its count (1e301 per axis) becomes an integer
+    EXPECT_THROW(read(scene("[[lattice]]\nmaterial = \"m\"\nradius = 0.01\nmin = [0, 0, 0]\n"
+                            "max = [1e300, 1e300, 1e300]\n")),
+                 InputError);
+}
