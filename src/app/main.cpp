@@ -134,6 +134,11 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "veridem: error: %s\n", e.what());
         return 2;
     }
+    catch (const veridem::OutputError& e) // a failed write: the run stops, what was written before stays
+    {
+        std::fprintf(stderr, "veridem: output failed: %s\n", e.what());
+        return 4;
+    }
     catch (const veridem::SimulationError& e)
     {
         std::fprintf(stderr, "veridem: simulation stopped: %s\n", e.what());

@@ -90,7 +90,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     checkTimeStep(scene, options);
     printRollingFrictionConversion(world);
 
-    io::ParticleRecorder recorder(options.outDir, scene.writeVtk);
+    io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat);
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
     const auto outputEvery = std::max<std::uint64_t>(1, std::llround(scene.outputInterval / scene.dt));
     dem::prepare(world);
@@ -139,6 +139,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             }
         }
     }
+    recorder.close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.progress)
         std::fprintf(stderr, "\r%*s\r", 78, "");

@@ -155,6 +155,8 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
         scene.settleTime = sim.number("settle_time", 0);
         sim.requireNonNegative("settle_time", scene.settleTime, "s");
         scene.settings.gravity = gravity.value_or(Vec2{0, -9.81});
+        scene.vtk = sim.boolean("vtk", true);
+        scene.vtkFormat = sim.choice("vtk_format", "auto", {"auto", "ascii", "binary"});
         sim.finish();
     }
     top.table("simulation");

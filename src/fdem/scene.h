@@ -28,6 +28,8 @@ struct Scene
     Real outputInterval = 0;           ///< [s]; 0: first and last state only
     Real settleTime = 0;               ///< [s] run with zero body velocities before t = 0, then impose them
     Real settleNormalDampingRatio = 0; ///< zeta_n during the settling [1]
+    bool vtk = true;                   ///< write .vtu frames and series.pvd
+    std::string vtkFormat = "auto";    ///< "auto", "ascii" or "binary" (io::chooseVtkFormat)
     std::vector<std::string> materialNames;
     std::vector<Material> materials;
     std::vector<BodyDefinition> bodies;

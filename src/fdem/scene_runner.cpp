@@ -55,7 +55,7 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
                          static_cast<unsigned long long>(settleSteps));
     }
     const Real start = world.time();
-    OutputWriter output(outDir);
+    OutputWriter output(outDir, scene.vtk, io::chooseVtkFormat(scene.vtkFormat, world.nodes().size()));
     output.write(world, 0);
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.endTime / dt));
     const std::uint64_t outputEvery =

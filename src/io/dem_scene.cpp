@@ -382,6 +382,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     scene.characteristicSpeed = simulation->number("characteristic_speed", 0.0);
     simulation->requireNonNegative("characteristic_speed", scene.characteristicSpeed, "m/s");
     scene.writeVtk = simulation->boolean("vtk", true);
+    const std::string vtkFormat = simulation->choice("vtk_format", "auto", {"auto", "ascii", "binary"});
     simulation->finish();
 
     auto materials = top.arrayOfTables("material");
@@ -442,6 +443,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     if (world.particles.size() == 0)
         throw InputError(file + ": the scene has no particles ([[sphere]], [[particles]] or [[lattice]])");
     checkSphereRanges(world, scene.dt, file);
+    scene.vtkFormat = chooseVtkFormat(vtkFormat, world.particles.size());
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
     checkInitialOverlaps(world, overlapTolerance); // also builds the pair table
