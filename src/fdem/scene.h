@@ -24,7 +24,7 @@ struct SceneBoundary
 struct Scene
 {
     WorldSettings settings;
-    Real endTime = 0;                  ///< [s]
+    Real duration = 0;                 ///< simulated time after settling [s]
     Real outputInterval = 0;           ///< [s]; 0: first and last state only
     Real settleTime = 0;               ///< [s] run with zero body velocities before t = 0, then impose them
     Real settleNormalDampingRatio = 0; ///< zeta_n during the settling [1]

@@ -227,7 +227,7 @@ struct Lattice
 };
 
 /// Reads a [[lattice]] table and counts its spheres (in floating point, checked against
-/// kMaxSpheres before any conversion to an integer); allocates nothing.
+/// maxSphereCount() before any conversion to an integer); allocates nothing.
 Lattice readLattice(TableReader& t, const dem::World& world)
 {
     Lattice l;
@@ -249,11 +249,11 @@ Lattice readLattice(TableReader& t, const dem::World& world)
     const Real nx = count(lo.x, hi.x), ny = count(lo.y, hi.y), nz = count(lo.z, hi.z);
     if (!(nx >= 1 && ny >= 1 && nz >= 1))
         t.fail("max", "the box is smaller than one sphere");
-    if (!(nx * ny * nz <= kMaxSpheres))
+    if (!(nx * ny * nz <= maxSphereCount()))
     {
         std::ostringstream s;
         s << "with 'min', 'max' and 'spacing' would create " << std::setprecision(3) << nx * ny * nz
-          << " spheres (at most " << kMaxSpheres << " in a scene)";
+          << " spheres (at most " << maxSphereCount() << " in a scene)";
         t.fail("spacing", s.str());
     }
     l.lo = lo;
@@ -363,6 +363,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     if (!simulation)
         top.fail("simulation", "is missing: every scene needs a [simulation] table with dt and duration");
     simulation->choice("type", "dem", {"dem", "fdem2d"});
+    refuseRenamedKeys(*simulation);
     scene.dt = simulation->requiredNumber("dt");
     simulation->requirePositive("dt", scene.dt, "s");
     scene.duration = simulation->requiredNumber("duration");

@@ -16,10 +16,20 @@ double physicalMemoryBytes()
     return pages > 0 && pageSize > 0 ? double(pages) * double(pageSize) : 0.0;
 }
 
+namespace
+{
+double sphereLimit = kMaxSpheres;
+}
+
+void limitSpheres(double count)
+{
+    sphereLimit = std::fmin(sphereLimit, count);
+}
+
 double maxSphereCount()
 {
     const double memory = physicalMemoryBytes();
-    return memory > 0 ? std::fmin(kMaxSpheres, std::floor(memory / kBytesPerSphere)) : kMaxSpheres;
+    return memory > 0 ? std::fmin(sphereLimit, std::floor(memory / kBytesPerSphere)) : sphereLimit;
 }
 
 void checkSphereCount(double count, const std::string& what, const std::string& file)
@@ -30,7 +40,7 @@ void checkSphereCount(double count, const std::string& what, const std::string& 
     {
         std::ostringstream s;
         s << std::setprecision(3) << file << ": " << what << " make " << count << " spheres, needing about "
-          << needed / 1e9 << " GB (" << kBytesPerSphere << " B per sphere); the limit is " << kMaxSpheres
+          << needed / 1e9 << " GB (" << kBytesPerSphere << " B per sphere); the limit is " << maxSphereCount()
           << " spheres";
         if (memory > 0)
             s << " and this machine's " << memory / 1e9 << " GB";

@@ -28,8 +28,12 @@ inline constexpr double kMaxDistanceInRadii = 1e9;
 /// Physical memory of this machine [bytes] (0 if unknown).
 double physicalMemoryBytes();
 
-/// The most spheres this machine can run: kMaxSpheres, or fewer if its memory holds fewer.
+/// The most spheres this machine can run: kMaxSpheres, or fewer if its memory holds fewer (or
+/// the lower limit set by limitSpheres).
 double maxSphereCount();
+
+/// Lowers the sphere limit of this process (the fuzz harness: small scenes, bounded memory).
+void limitSpheres(double count);
 
 /// Refuses `count` spheres (`what` describes where they come from) above kMaxSpheres or above the
 /// machine's memory by the kBytesPerSphere estimate, with the figures, before any is allocated.

@@ -300,6 +300,16 @@ std::vector<TableReader> TableReader::arrayOfTables(std::string_view key)
     return out;
 }
 
+void refuseRenamedKeys(const TableReader& simulation)
+{
+    static const std::pair<const char*, const char*> kRenamed[] = {
+        {"time_step", "dt"}, {"timestep", "dt"}, {"end_time", "duration"}, {"write_vtk", "vtk"}};
+    for (const auto& [other, key] : kRenamed)
+        if (simulation.has(other))
+            simulation.fail(other, std::string("is not a key: use '") + key +
+                                       "' (the same name in 2D and 3D scenes, docs/scene-format.md)");
+}
+
 void TableReader::finish() const
 {
     for (const auto& [key, value] : *table_)

@@ -66,6 +66,11 @@ class TableReader
     std::set<std::string, std::less<>> used_;
 };
 
+/// The [simulation] keys shared by the 3D and 2D scenes have one name each (docs/scene-format.md):
+/// a key of the other vocabulary ('time_step', 'end_time', 'timestep', 'write_vtk') is refused
+/// with its line and the key to use instead.
+void refuseRenamedKeys(const TableReader& simulation);
+
 /// Largest scene file read [bytes]; bulk positions go in [[particles]] files.
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 64u << 20;
 
