@@ -3,6 +3,7 @@
 #include "core/error.h"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace veridem::io
 {
@@ -34,8 +35,17 @@ class Scanner
                 skipComment();
             else if (c == '"' || c == '\'')
             {
+                // A string starts a key or a value: at the line start or after = [ , { or a
+                // dot. Elsewhere (inside a bare value) it is malformed, and toml++ 3.3.0 can reach
+                // undefined behaviour on the text that follows (found by fuzzing).
+                const bool starts = lineStart_ ||
+                                    std::string_view("=[,{").find(last_) != std::string_view::npos ||
+                                    (last_ == '.' && inKey_);
+                if (!starts)
+                    fail(std::string("misplaced ") + c + ": a string must start a key or a value");
                 lineStart_ = false;
                 skipString();
+                last_ = c;
             }
             else if (c == ' ' || c == '\t' || c == '\r')
                 ++i_;
@@ -45,10 +55,23 @@ class Scanner
             {
                 checkAscii(c);
                 lineStart_ = false;
+                last_ = c;
                 if (c == '[' || c == '{')
+                {
                     ++depth_;
+                    open_.push_back(c);
+                    inKey_ = c == '{';
+                }
                 else if ((c == ']' || c == '}') && depth_ > 0)
+                {
                     --depth_;
+                    open_.pop_back();
+                    inKey_ = false;
+                }
+                else if (c == '=')
+                    inKey_ = false;
+                else if (c == ',')
+                    inKey_ = !open_.empty() && open_.back() == '{';
                 ++i_;
             }
         }
@@ -71,6 +94,8 @@ class Scanner
     {
         ++line_;
         lineStart_ = true;
+        if (depth_ == 0)
+            inKey_ = true;
     }
 
     bool at(std::string_view s) const { return text_.substr(i_, s.size()) == s; }
@@ -174,6 +199,7 @@ class Scanner
         if (i_ < text_.size() && text_[i_] != '\n')
             fail(std::string(expected) + ", alone on its line");
         lineStart_ = false;
+        last_ = ']';
     }
 
     std::string_view text_;
@@ -181,13 +207,54 @@ class Scanner
     std::size_t i_ = 0;
     std::size_t line_ = 1;
     int depth_ = 0;         // [ ] and { } nesting inside a value
+    char last_ = '\n';      // the last character outside strings, comments and blanks
     bool lineStart_ = true; // nothing but blanks so far on this line
+    bool inKey_ = true;     // a key is being read (before '=', or in an inline table after { or ,)
+    std::string open_;      // the open [ and { of values, innermost last
 };
+
+/// TOML text is UTF-8 without control characters other than tab, line feed and carriage return.
+void checkEncoding(std::string_view text, const std::string& file)
+{
+    std::size_t line = 1;
+    auto fail = [&](const std::string& what)
+    { throw InputError(file + ":" + std::to_string(line) + ": " + what + " (a scene is UTF-8 text)"); };
+    for (std::size_t i = 0; i < text.size();)
+    {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c < 0x80)
+        {
+            if (c == '\n')
+                ++line;
+            else if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7F)
+                fail("control character " + std::to_string(c));
+            ++i;
+            continue;
+        }
+        // Length and smallest code point of the sequence; continuation bytes are 10xxxxxx.
+        const std::size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
+        if (length == 0 || c > 0xF4 || i + length > text.size())
+            fail("invalid UTF-8");
+        std::uint32_t code = c & (0x7F >> length);
+        for (std::size_t k = 1; k < length; ++k)
+        {
+            const auto next = static_cast<unsigned char>(text[i + k]);
+            if ((next & 0xC0) != 0x80)
+                fail("invalid UTF-8");
+            code = (code << 6) | (next & 0x3F);
+        }
+        const std::uint32_t smallest = length == 2 ? 0x80 : length == 3 ? 0x800 : 0x10000;
+        if (code < smallest || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+            fail("invalid UTF-8");
+        i += length;
+    }
+}
 
 } // namespace
 
 void checkTomlText(std::string_view text, const std::string& file)
 {
+    checkEncoding(text, file);
     Scanner(text, file).run();
 }
 

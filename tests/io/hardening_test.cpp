@@ -118,3 +118,31 @@ TEST(Hardening, SceneRefusesOutOfRangeDerivedQuantities)
                             "max = [1e300, 1e300, 1e300]\n")),
                  InputError);
 }
+
+// Found by fuzzing: a quote inside a bare value followed by non-ASCII text reached an
+// unreachable point of toml++ 3.3.0 (tests/io/fuzz_cases/scene3d/toml_quote_in_bare_value_non_ascii).
+TEST(Hardening, TomlGuardRefusesMisplacedQuotesBadUtf8AndControlCharacters)
+{
+    auto refused = [](const std::string& text)
+    {
+        try
+        {
+            io::checkTomlText(text, "t.toml");
+        }
+        catch (const InputError& e)
+        {
+            return std::string(e.what()).substr(0, 9) == "t.toml:2:";
+        }
+        return false;
+    };
+    EXPECT_TRUE(refused("[simulation]\ntype = 2-fdem2d\"[simu\xD0\x93\n"));
+    EXPECT_TRUE(refused("[simulation]\nradius = 0.\"\xC3\xA9\n")); // toml_quote_after_number_dot
+    EXPECT_TRUE(refused("a = 1\nb = \"x\xC3\"\n"));                // cut sequence
+    EXPECT_TRUE(refused("a = 1\nb = \"\xC0\xAF\"\n"));             // overlong '/'
+    EXPECT_TRUE(refused("a = 1\nb = \"\xED\xA0\x80\"\n"));         // surrogate
+    EXPECT_TRUE(refused("a = 1\nb = 2\x01\n"));                    // control character
+    EXPECT_TRUE(refused(std::string("a = 1\nb = \"\0\"\n", 13)));
+    EXPECT_NO_THROW(io::checkTomlText("a = [\"x\", 'y', { b = \"z\", c.\"d\" = 1 }]\n\"q\".'r' = 1\n"
+                                      "e = { f = [1, \"g\"], \"h\" = 2 }\n",
+                                      "t.toml"));
+}
