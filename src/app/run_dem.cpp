@@ -5,6 +5,7 @@
 #include "dem/time_step.h"
 #include "io/dem_scene.h"
 #include "io/particle_output.h"
+#include "io/thermo_output.h"
 
 #include <algorithm>
 #include <chrono>
@@ -91,10 +92,12 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     printRollingFrictionConversion(world);
 
     io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat);
+    io::ThermoRecorder thermo(options.outDir);
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
     const auto outputEvery = std::max<std::uint64_t>(1, std::llround(scene.outputInterval / scene.dt));
     dem::prepare(world);
     recorder.record(world);
+    thermo.record(world);
 
     const auto start = std::chrono::steady_clock::now();
     auto lastProgress = start;
@@ -123,7 +126,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             throw SimulationError(m.str());
         }
         if (s % outputEvery == 0 || s == totalSteps)
+        {
             recorder.record(world);
+            thermo.record(world);
+        }
         if (options.progress && s % kProgressEvery == 0)
         {
             const auto now = std::chrono::steady_clock::now();
@@ -140,6 +146,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         }
     }
     recorder.close();
+    thermo.close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.progress)
         std::fprintf(stderr, "\r%*s\r", 78, "");
