@@ -106,6 +106,34 @@ class Scanner
             ++i_;
     }
 
+    /// At a backslash in a basic string: steps over the escaped character, or over the blanks and
+    /// line ends after a line-ending backslash, refusing a non-ASCII character right after them
+    /// (toml++ 3.3.0 tests it for Unicode whitespace and reaches undefined behaviour for many code
+    /// points, e.g. U+00E9 or U+FEDF: found by fuzzing). Leaves i_ on the last character stepped.
+    void escape()
+    {
+        std::size_t j = i_ + 1;
+        while (j < text_.size() && (text_[j] == ' ' || text_[j] == '\t' || text_[j] == '\r'))
+            ++j;
+        if (j >= text_.size() || text_[j] != '\n')
+        {
+            if (i_ + 1 < text_.size() && text_[i_ + 1] != '\n')
+                ++i_; // an escape sequence such as \" or \\ (checked by the TOML library)
+            return;
+        }
+        while (j < text_.size() &&
+               (text_[j] == ' ' || text_[j] == '\t' || text_[j] == '\r' || text_[j] == '\n'))
+        {
+            if (text_[j] == '\n')
+                ++line_;
+            ++j;
+        }
+        if (j < text_.size() && static_cast<unsigned char>(text_[j]) >= 0x80)
+            fail("non-ASCII character right after a line-ending backslash in a string (put an ASCII "
+                 "character first)");
+        i_ = j - 1;
+    }
+
     /// Skips a basic, literal or multi-line string starting at i_. An unterminated single-line
     /// string ends at the line end (the TOML library reports it).
     void skipString()
@@ -119,8 +147,8 @@ class Scanner
             {
                 if (text_[i_] == '\n')
                     ++line_;
-                else if (quote == '"' && text_[i_] == '\\' && i_ + 1 < text_.size() && text_[i_ + 1] != '\n')
-                    ++i_;
+                else if (quote == '"' && text_[i_] == '\\')
+                    escape();
                 ++i_;
             }
             i_ = std::min(text_.size(), i_ + 3);
@@ -131,8 +159,8 @@ class Scanner
         ++i_;
         while (i_ < text_.size() && text_[i_] != quote && text_[i_] != '\n')
         {
-            if (quote == '"' && text_[i_] == '\\' && i_ + 1 < text_.size() && text_[i_ + 1] != '\n')
-                ++i_;
+            if (quote == '"' && text_[i_] == '\\')
+                escape();
             ++i_;
         }
         if (i_ < text_.size() && text_[i_] == quote)

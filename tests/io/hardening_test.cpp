@@ -137,12 +137,16 @@ TEST(Hardening, TomlGuardRefusesMisplacedQuotesBadUtf8AndControlCharacters)
     };
     EXPECT_TRUE(refused("[simulation]\ntype = 2-fdem2d\"[simu\xD0\x93\n"));
     EXPECT_TRUE(refused("[simulation]\nradius = 0.\"\xC3\xA9\n")); // toml_quote_after_number_dot
-    EXPECT_TRUE(refused("a = 1\nb = \"x\xC3\"\n"));                // cut sequence
-    EXPECT_TRUE(refused("a = 1\nb = \"\xC0\xAF\"\n"));             // overlong '/'
-    EXPECT_TRUE(refused("a = 1\nb = \"\xED\xA0\x80\"\n"));         // surrogate
-    EXPECT_TRUE(refused("a = 1\nb = 2\x01\n"));                    // control character
+    // toml_non_ascii_after_line_ending_backslash: U+FEDF after a trimmed line end
+    EXPECT_TRUE(refused("b = \"\"\"x\\\n \xEF\xBB\x9Fy\"\"\"\n"));
+    EXPECT_TRUE(refused("b = \"\"\"x\\  \r\n \xC3\xA9\"\"\"\n"));
+    EXPECT_TRUE(refused("a = 1\nb = \"x\xC3\"\n"));        // cut sequence
+    EXPECT_TRUE(refused("a = 1\nb = \"\xC0\xAF\"\n"));     // overlong '/'
+    EXPECT_TRUE(refused("a = 1\nb = \"\xED\xA0\x80\"\n")); // surrogate
+    EXPECT_TRUE(refused("a = 1\nb = 2\x01\n"));            // control character
     EXPECT_TRUE(refused(std::string("a = 1\nb = \"\0\"\n", 13)));
     EXPECT_NO_THROW(io::checkTomlText("a = [\"x\", 'y', { b = \"z\", c.\"d\" = 1 }]\n\"q\".'r' = 1\n"
-                                      "e = { f = [1, \"g\"], \"h\" = 2 }\n",
+                                      "e = { f = [1, \"g\"], \"h\" = 2 }\n"
+                                      "i = \"\"\"j\\\n  k \xC3\xA9 \\\"\\\\\"\"\"\n",
                                       "t.toml"));
 }
