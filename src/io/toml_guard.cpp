@@ -107,14 +107,17 @@ class Scanner
     }
 
     /// At a backslash in a basic string: steps over the escaped character, or over the blanks and
-    /// line ends after a line-ending backslash, refusing a non-ASCII character right after them
-    /// (toml++ 3.3.0 tests it for Unicode whitespace and reaches undefined behaviour for many code
-    /// points, e.g. U+00E9 or U+FEDF: found by fuzzing). Leaves i_ on the last character stepped.
+    /// line ends after a line-ending backslash, refusing a non-ASCII character after the backslash
+    /// (and its blanks) or right after the trimmed line ends: toml++ 3.3.0 tests that character for
+    /// Unicode whitespace and reaches undefined behaviour for many code points, e.g. U+00E9, U+FE7F
+    /// or U+FEDF (found by fuzzing). Leaves i_ on the last character stepped over.
     void escape()
     {
         std::size_t j = i_ + 1;
         while (j < text_.size() && (text_[j] == ' ' || text_[j] == '\t' || text_[j] == '\r'))
             ++j;
+        if (j < text_.size() && static_cast<unsigned char>(text_[j]) >= 0x80)
+            fail("non-ASCII character after a backslash in a string (not an escape sequence)");
         if (j >= text_.size() || text_[j] != '\n')
         {
             if (i_ + 1 < text_.size() && text_[i_ + 1] != '\n')
