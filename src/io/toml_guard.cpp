@@ -54,6 +54,11 @@ class Scanner
             else
             {
                 checkAscii(c);
+                // An array or inline table starts a value: after = [ or , (a header is handled
+                // above). After anything else toml++ 3.3.0 can reach undefined behaviour on the
+                // text that follows (found by fuzzing: "duration = 1[[...[\"...").
+                if ((c == '[' || c == '{') && std::string_view("=[,").find(last_) == std::string_view::npos)
+                    fail(std::string("misplaced ") + c + ": an array or inline table must start a value");
                 lineStart_ = false;
                 last_ = c;
                 if (c == '[' || c == '{')

@@ -142,6 +142,8 @@ TEST(Hardening, TomlGuardRefusesMisplacedQuotesBadUtf8AndControlCharacters)
     EXPECT_TRUE(refused("b = \"\"\"x\\  \r\n \xC3\xA9\"\"\"\n"));
     EXPECT_TRUE(refused("\"\"\"\\\n\\\xEF\xB9\xBF")); // toml_non_ascii_after_backslash: U+FE7F
     EXPECT_TRUE(refused("a = 1\nb = \"x\\ \xC3\xA9\"\n"));
+    EXPECT_TRUE(refused("a = 1\nb = 1[[S[[\"mu\xD0\x93\"]]\n")); // toml_bracket_after_number
+    EXPECT_TRUE(refused("a = 1\nb = x{c = 1}\n"));
     EXPECT_TRUE(refused("a = 1\nb = \"x\xC3\"\n"));        // cut sequence
     EXPECT_TRUE(refused("a = 1\nb = \"\xC0\xAF\"\n"));     // overlong '/'
     EXPECT_TRUE(refused("a = 1\nb = \"\xED\xA0\x80\"\n")); // surrogate
