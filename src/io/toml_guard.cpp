@@ -59,6 +59,8 @@ class Scanner
                 // text that follows (found by fuzzing: "duration = 1[[...[\"...").
                 if ((c == '[' || c == '{') && std::string_view("=[,").find(last_) == std::string_view::npos)
                     fail(std::string("misplaced ") + c + ": an array or inline table must start a value");
+                if (c == '=' && !inKey_) // a second '=' in a value ("u = 0b0w=\"...": found by fuzzing)
+                    fail("misplaced '=': one key = value per line");
                 lineStart_ = false;
                 last_ = c;
                 if (c == '[' || c == '{')

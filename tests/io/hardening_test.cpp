@@ -144,10 +144,11 @@ TEST(Hardening, TomlGuardRefusesMisplacedQuotesBadUtf8AndControlCharacters)
     EXPECT_TRUE(refused("a = 1\nb = \"x\\ \xC3\xA9\"\n"));
     EXPECT_TRUE(refused("a = 1\nb = 1[[S[[\"mu\xD0\x93\"]]\n")); // toml_bracket_after_number
     EXPECT_TRUE(refused("a = 1\nb = x{c = 1}\n"));
-    EXPECT_TRUE(refused("a = 1\nb = \"x\xC3\"\n"));        // cut sequence
-    EXPECT_TRUE(refused("a = 1\nb = \"\xC0\xAF\"\n"));     // overlong '/'
-    EXPECT_TRUE(refused("a = 1\nb = \"\xED\xA0\x80\"\n")); // surrogate
-    EXPECT_TRUE(refused("a = 1\nb = 2\x01\n"));            // control character
+    EXPECT_TRUE(refused("a = 1\nu= 0b000ouw=\"l\xD0\x93")); // toml_second_equals_in_value
+    EXPECT_TRUE(refused("a = 1\nb = \"x\xC3\"\n"));         // cut sequence
+    EXPECT_TRUE(refused("a = 1\nb = \"\xC0\xAF\"\n"));      // overlong '/'
+    EXPECT_TRUE(refused("a = 1\nb = \"\xED\xA0\x80\"\n"));  // surrogate
+    EXPECT_TRUE(refused("a = 1\nb = 2\x01\n"));             // control character
     EXPECT_TRUE(refused(std::string("a = 1\nb = \"\0\"\n", 13)));
     EXPECT_NO_THROW(io::checkTomlText("a = [\"x\", 'y', { b = \"z\", c.\"d\" = 1 }]\n\"q\".'r' = 1\n"
                                       "e = { f = [1, \"g\"], \"h\" = 2 }\n"
