@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <set>
 #include <string>
+#include <vector>
 
 #ifdef VERIDEM_HAVE_FDEM
 #include "fdem/scene_runner.h"
@@ -20,6 +22,22 @@
 
 namespace
 {
+
+/// Refuses a --label that no case carries (a typo would otherwise select nothing and pass).
+void checkLabels(const std::vector<std::string>& labels)
+{
+    std::set<std::string> known;
+    for (const auto& c : veridem::verify::registry())
+        known.insert(c.labels.begin(), c.labels.end());
+    for (const auto& l : labels)
+        if (!known.count(l))
+        {
+            std::string list;
+            for (const auto& k : known)
+                list += (list.empty() ? "" : ", ") + k;
+            throw veridem::InputError("unknown verification label '" + l + "' (known labels: " + list + ")");
+        }
+}
 
 int runCommand(const veridem::app::RunOptions& options)
 {
@@ -97,6 +115,7 @@ int main(int argc, char** argv)
             veridem::verify::listCases();
             return 0;
         }
+        checkLabels(verifyRequest.labels);
         verifyRequest.showProgress = !quiet;
         if (!jsonPath.empty())
             verifyRequest.jsonPath = jsonPath;
@@ -124,6 +143,11 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr, "veridem: error: %s\n", e.what());
         return 2;
+    }
+    catch (const veridem::OutputError& e) // a failed write: the run stops, what was written before stays
+    {
+        std::fprintf(stderr, "veridem: output failed: %s\n", e.what());
+        return 4;
     }
     catch (const veridem::SimulationError& e)
     {

@@ -6,6 +6,7 @@
 #include "exec/thread_pool.h"
 #include "io/dem_scene.h"
 #include "io/particle_output.h"
+#include "io/thermo_output.h"
 
 #include <algorithm>
 #include <chrono>
@@ -91,11 +92,13 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     checkTimeStep(scene, options);
     printRollingFrictionConversion(world);
 
-    io::ParticleRecorder recorder(options.outDir, scene.writeVtk);
+    io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat);
+    io::ThermoRecorder thermo(options.outDir);
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
     const auto outputEvery = std::max<std::uint64_t>(1, std::llround(scene.outputInterval / scene.dt));
     dem::prepare(world);
     recorder.record(world);
+    thermo.record(world);
 
     const auto start = std::chrono::steady_clock::now();
     auto lastProgress = start;
@@ -124,7 +127,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             throw SimulationError(m.str());
         }
         if (s % outputEvery == 0 || s == totalSteps)
+        {
             recorder.record(world);
+            thermo.record(world);
+        }
         if (options.progress && s % kProgressEvery == 0)
         {
             const auto now = std::chrono::steady_clock::now();
@@ -140,6 +146,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             }
         }
     }
+    recorder.close();
+    thermo.close();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.progress)
         std::fprintf(stderr, "\r%*s\r", 78, "");

@@ -15,6 +15,13 @@ class InputError : public std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
+/// An output file that could not be written completely (disk full, permissions); the run stops.
+class OutputError : public std::runtime_error
+{
+  public:
+    using std::runtime_error::runtime_error;
+};
+
 /// A simulation that became non-physical (NaN, excessive overlap); names step, particle, cause.
 class SimulationError : public std::runtime_error
 {

@@ -261,16 +261,24 @@ void NeighborList::rebuild(const ParticleStore& particles)
         maxRadius = std::fmax(maxRadius, particles.radius[i]);
     }
     Real cell = std::fmax(2 * maxRadius + skin, 1e-12);
-    auto cellsAlong = [&](Real extent) { return static_cast<std::size_t>(extent / cell) + 1; };
+    // Cell counts in floating point, converted only once bounded: a blown-up state (huge or
+    // non-finite positions, stopped by the caller's health check) must neither hang this loop
+    // nor overflow a float-to-integer conversion. A box that is not finite gets one cell.
+    const bool finiteBox = isFinite(hi - lo);
+    auto cellsAlong = [&](Real extent) { return finiteBox ? std::floor(extent / cell) + 1 : Real(1); };
     // Keep the grid O(N): a lone particle far away must not create billions of empty cells.
     const std::size_t maxCells = 4 * n + 64;
-    while (cellsAlong(hi.x - lo.x) * cellsAlong(hi.y - lo.y) * cellsAlong(hi.z - lo.z) > maxCells)
+    while (cellsAlong(hi.x - lo.x) * cellsAlong(hi.y - lo.y) * cellsAlong(hi.z - lo.z) > Real(maxCells))
         cell *= 1.5;
-    const std::size_t nx = cellsAlong(hi.x - lo.x), ny = cellsAlong(hi.y - lo.y),
-                      nz = cellsAlong(hi.z - lo.z);
+    const auto nx = static_cast<std::size_t>(cellsAlong(hi.x - lo.x)),
+               ny = static_cast<std::size_t>(cellsAlong(hi.y - lo.y)),
+               nz = static_cast<std::size_t>(cellsAlong(hi.z - lo.z));
     const std::size_t cellCount = nx * ny * nz;
     auto coordinate = [&](Real value, Real origin, std::size_t count)
-    { return std::min(static_cast<std::size_t>((value - origin) / cell), count - 1); };
+    {
+        const Real c = (value - origin) / cell; // NaN for a NaN position: cell 0
+        return c >= 0 && c < Real(count) ? static_cast<std::size_t>(c) : c >= Real(count) ? count - 1 : 0;
+    };
 
     // Counting sort of particles by cell (stable: ascending index within a cell). The grid arrays
     // live only during the rebuild (12 bytes per particle not held between rebuilds).

@@ -412,14 +412,37 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
     return steps;
 }
 
+namespace
+{
+Real translationalKineticEnergy(const ParticleStore& p, std::size_t i)
+{
+    return 0.5 * p.mass[i] * lengthSquared(p.velocity[i]);
+}
+Real rotationalKineticEnergy(const ParticleStore& p, std::size_t i)
+{
+    return 0.5 / p.invInertia[i] * lengthSquared(p.angularVelocity[i]);
+}
+} // namespace
+
 Real kineticEnergy(const World& world)
 {
     const ParticleStore& p = world.particles;
     Real energy = 0;
     for (std::size_t i = 0; i < p.size(); ++i)
-        energy += 0.5 * p.mass[i] * lengthSquared(p.velocity[i]) +
-                  0.5 / p.invInertia[i] * lengthSquared(p.angularVelocity[i]);
+        energy += translationalKineticEnergy(p, i) + rotationalKineticEnergy(p, i);
     return energy;
+}
+
+KineticEnergyParts kineticEnergyParts(const World& world)
+{
+    const ParticleStore& p = world.particles;
+    KineticEnergyParts parts;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        parts.translational += translationalKineticEnergy(p, i);
+        parts.rotational += rotationalKineticEnergy(p, i);
+    }
+    return parts;
 }
 
 } // namespace veridem::dem

@@ -160,4 +160,12 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps,
 /// Kinetic energy, translational + rotational [J].
 Real kineticEnergy(const World& world);
 
+/// The two parts of the kinetic energy, each summed over the particles in index order [J].
+struct KineticEnergyParts
+{
+    Real translational = 0; // sum of m v^2 / 2
+    Real rotational = 0;    // sum of I w^2 / 2
+};
+KineticEnergyParts kineticEnergyParts(const World& world);
+
 } // namespace veridem::dem

@@ -17,7 +17,25 @@ namespace
 class Tokens
 {
   public:
-    Tokens(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
+    Tokens(std::istream& in, std::string source) : in_(in), source_(std::move(source))
+    {
+        // The stream's size bounds every declared count (each entry takes at least two bytes), so a
+        // short file declaring 1e8 nodes is refused before anything is allocated for them.
+        const auto here = in_.tellg();
+        if (here < 0)
+        {
+            in_.clear();
+            return;
+        }
+        if (in_.seekg(0, std::ios::end))
+        {
+            const auto end = in_.tellg();
+            if (end >= here)
+                bytes_ = static_cast<long long>(end - here);
+        }
+        in_.clear();
+        in_.seekg(here);
+    }
 
     [[noreturn]] void fail(const std::string& what) const
     {
@@ -69,6 +87,9 @@ class Tokens
         const long long v = integer(what);
         if (v < 0 || v > 100000000)
             fail(std::string(what) + " out of range: " + std::to_string(v));
+        if (bytes_ >= 0 && v > bytes_ / 2)
+            fail(std::string(what) + " " + std::to_string(v) + " cannot fit in a file of " +
+                 std::to_string(bytes_) + " bytes (each entry takes at least 2)");
         return static_cast<std::size_t>(v);
     }
 
@@ -105,6 +126,7 @@ class Tokens
     std::string source_;
     std::istringstream words_;
     std::size_t line_ = 0;
+    long long bytes_ = -1; // size of the stream from where reading started; -1 if unknown
 };
 
 struct Reader

@@ -3,109 +3,131 @@
 #include "core/error.h"
 
 #include <cstdio>
-#include <iomanip>
 
 namespace veridem::fdem
 {
 
-void writeVtu(const World& world, const std::filesystem::path& file)
+void writeVtu(const World& world, const std::filesystem::path& file, io::VtkFormat format)
 {
-    std::ofstream out(file);
-    if (!out)
-        throw InputError(file.string() + ": cannot write the output file");
     const NodeStore& nodes = world.nodes();
     const TriangleStore& tris = world.triangles();
-    out << std::setprecision(10);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
-           "byte_order=\"LittleEndian\">\n"
-        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << nodes.size() << "\" NumberOfCells=\""
-        << tris.size()
-        << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t n = 0; n < nodes.size(); ++n)
-        out << nodes.position[n].x << " " << nodes.position[n].y << " 0\n";
-    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" "
-           "format=\"ascii\">\n";
-    for (const auto& t : tris.nodes)
-        out << t[0] << " " << t[1] << " " << t[2] << "\n";
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (std::size_t t = 0; t < tris.size(); ++t)
-        out << 3 * (t + 1) << "\n";
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t t = 0; t < tris.size(); ++t)
-        out << "5\n";
-    out << "</DataArray>\n</Cells>\n<PointData Vectors=\"velocity\">\n";
-    out << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t n = 0; n < nodes.size(); ++n)
+    const std::size_t n = nodes.size(), t = tris.size();
+    io::AtomicFile atomic(file);
+    std::ostream& out = atomic.stream();
+    io::VtkXmlArrays arrays(format);
+    out << arrays.vtkFileOpening("UnstructuredGrid") << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n
+        << "\" NumberOfCells=\"" << t << "\">\n<Points>\n";
+    std::vector<double> flat(std::max(3 * n, 9 * t));
+    auto nodeVectors = [&](auto value)
     {
-        const Vec2 u = nodes.position[n] - nodes.referencePosition[n];
-        out << u.x << " " << u.y << " 0\n";
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const Vec2 v = value(i);
+            flat[3 * i] = v.x;
+            flat[3 * i + 1] = v.y;
+            flat[3 * i + 2] = 0;
+        }
+        return flat.data();
+    };
+    arrays.float64(out, "", 3, nodeVectors([&](std::size_t i) { return nodes.position[i]; }), 3 * n);
+    out << "</Points>\n<Cells>\n";
+    std::vector<std::int64_t> connectivity(3 * t), offsets(t);
+    for (std::size_t k = 0; k < t; ++k)
+    {
+        for (int c = 0; c < 3; ++c)
+            connectivity[3 * k + c] = tris.nodes[k][c];
+        offsets[k] = static_cast<std::int64_t>(3 * (k + 1));
     }
-    out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">\n";
-    for (std::size_t n = 0; n < nodes.size(); ++n)
-        out << nodes.velocity[n].x << " " << nodes.velocity[n].y << " 0\n";
-    out << "</DataArray>\n</PointData>\n<CellData Tensors=\"stress\">\n";
-    out << "<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"9\" format=\"ascii\">\n";
-    for (const auto& s : tris.stress)
-        out << s.xx << " " << s.xy << " 0 " << s.xy << " " << s.yy << " 0 0 0 0\n";
-    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body\" format=\"ascii\">\n";
-    for (auto b : tris.body)
-        out << b << "\n";
-    out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    const std::vector<std::uint8_t> types(t, 5); // VTK_TRIANGLE
+    arrays.int64(out, "connectivity", 1, connectivity.data(), connectivity.size());
+    arrays.int64(out, "offsets", 1, offsets.data(), offsets.size());
+    arrays.uint8(out, "types", 1, types.data(), types.size());
+    out << "</Cells>\n<PointData Vectors=\"velocity\">\n";
+    arrays.float64(out, "displacement", 3,
+                   nodeVectors([&](std::size_t i) { return nodes.position[i] - nodes.referencePosition[i]; }),
+                   3 * n);
+    arrays.float64(out, "velocity", 3, nodeVectors([&](std::size_t i) { return nodes.velocity[i]; }), 3 * n);
+    out << "</PointData>\n<CellData Tensors=\"stress\">\n";
+    for (std::size_t k = 0; k < t; ++k)
+    {
+        const auto& s = tris.stress[k];
+        const double row[9] = {s.xx, s.xy, 0, s.xy, s.yy, 0, 0, 0, 0};
+        std::copy(row, row + 9, flat.begin() + static_cast<std::ptrdiff_t>(9 * k));
+    }
+    arrays.float64(out, "stress", 9, flat.data(), 9 * t);
+    std::vector<std::int32_t> body(t);
+    for (std::size_t k = 0; k < t; ++k)
+        body[k] = static_cast<std::int32_t>(tris.body[k]);
+    arrays.int32(out, "body", 1, body.data(), t);
+    out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n";
+    arrays.finish(out);
+    atomic.commit();
 }
 
-OutputWriter::OutputWriter(const std::filesystem::path& directory) : directory_(directory)
+OutputWriter::OutputWriter(const std::filesystem::path& directory, bool vtk, io::VtkFormat format)
+    : directory_(directory), vtk_(vtk), format_(format)
 {
     std::error_code ec;
     std::filesystem::create_directories(directory, ec);
+    if (ec)
+        throw OutputError("cannot create the output directory '" + directory.string() + "': " + ec.message());
     bodies_.open(directory / "bodies.csv");
     energy_.open(directory / "energy.csv");
-    if (ec || !bodies_ || !energy_)
-        throw InputError(directory.string() + ": cannot create the output directory or its files");
-    bodies_ << "time,body,name,x,y,vx,vy\n" << std::setprecision(12);
-    energy_ << "time,kinetic,strain,gravity,friction_work,normal_damping_work\n" << std::setprecision(12);
-}
-
-OutputWriter::~OutputWriter()
-{
-    try
-    {
-        finish();
-    }
-    catch (...)
-    {
-    }
+    bodies_.stream() << "time,body,name,x,y,vx,vy\n";
+    energy_.stream() << "time,kinetic,strain,gravity,friction_work,normal_damping_work\n";
+    bodies_.flush();
+    energy_.flush();
 }
 
 void OutputWriter::write(const World& world, Real time)
 {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05zu.vtu", frames_.size());
-    writeVtu(world, directory_ / name);
-    frames_.emplace_back(time, name);
+    if (vtk_)
+    {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05zu.vtu", frames_);
+        writeVtu(world, directory_ / name, format_);
+        series_ += "<DataSet timestep=\"";
+        io::appendNumber(series_, time);
+        series_ += "\" file=\"" + std::string(name) + "\"/>\n";
+        io::AtomicFile pvd(directory_ / "series.pvd");
+        pvd.stream()
+            << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+            << series_ << "</Collection>\n</VTKFile>\n";
+        pvd.commit();
+    }
+    ++frames_;
+    std::string rows;
     for (std::uint32_t b = 0; b < world.bodyCount(); ++b)
     {
         const BodyState s = world.bodyState(b);
-        bodies_ << time << "," << b << "," << world.bodyName(b) << "," << s.centroid.x << "," << s.centroid.y
-                << "," << s.velocity.x << "," << s.velocity.y << "\n";
+        io::appendNumber(rows, time);
+        rows += "," + std::to_string(b) + "," + world.bodyName(b);
+        for (const Real v : {s.centroid.x, s.centroid.y, s.velocity.x, s.velocity.y})
+        {
+            rows += ',';
+            io::appendNumber(rows, v);
+        }
+        rows += '\n';
     }
+    bodies_.stream() << rows;
+    bodies_.flush();
     const Energies e = world.energies();
-    energy_ << time << "," << e.kinetic << "," << e.strain << "," << e.gravity << "," << e.frictionWork << ","
-            << e.normalDampingWork << "\n";
+    rows.clear();
+    io::appendNumber(rows, time);
+    for (const Real v : {e.kinetic, e.strain, e.gravity, e.frictionWork, e.normalDampingWork})
+    {
+        rows += ',';
+        io::appendNumber(rows, v);
+    }
+    rows += '\n';
+    energy_.stream() << rows;
+    energy_.flush();
 }
 
 void OutputWriter::finish()
 {
-    if (finished_)
-        return;
-    finished_ = true;
-    bodies_.flush();
-    energy_.flush();
-    std::ofstream pvd(directory_ / "series.pvd");
-    pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-    for (const auto& [t, f] : frames_)
-        pvd << "<DataSet timestep=\"" << std::setprecision(12) << t << "\" file=\"" << f << "\"/>\n";
-    pvd << "</Collection>\n</VTKFile>\n";
+    bodies_.close();
+    energy_.close();
 }
 
 } // namespace veridem::fdem

@@ -1,6 +1,7 @@
 #include "fdem/scene.h"
 
 #include "core/error.h"
+#include "fdem/body_overlap.h"
 #include "fdem/gmsh_reader.h"
 #include "fdem/mesher.h"
 #include "io/toml_reader.h"
@@ -14,6 +15,8 @@ namespace veridem::fdem
 
 namespace
 {
+
+constexpr std::int64_t kMaxRectangleTriangles = 10'000'000; // 2 nx ny
 
 std::string locate(const std::string& file, const toml::node& node)
 {
@@ -106,6 +109,9 @@ TriangleMesh readGeometry(toml::table& bodyTable, io::TableReader& body, const s
             r.fail("nx", "must be an integer in [1, 100000]");
         if (ny < 1 || ny > 100000)
             r.fail("ny", "must be an integer in [1, 100000]");
+        if (2 * nx * ny > kMaxRectangleTriangles) // checked before the mesher allocates them
+            r.fail("ny", "with nx would make " + std::to_string(2 * nx * ny) + " triangles (at most " +
+                             std::to_string(kMaxRectangleTriangles) + " in a rectangle)");
         const std::string pattern = r.choice("pattern", "alternate", {"alternate", "right"});
         r.finish();
         mesh = meshRectangle(origin, s, static_cast<int>(nx), static_cast<int>(ny),
@@ -145,15 +151,19 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
     {
         io::TableReader sim(simulationTable, "[simulation]", file);
         sim.choice("type", "fdem2d", {"fdem2d"});
-        scene.settings.timeStep = sim.requiredNumber("time_step");
-        sim.requirePositive("time_step", scene.settings.timeStep, "s");
-        scene.endTime = sim.requiredNumber("end_time");
-        sim.requirePositive("end_time", scene.endTime, "s");
+        if (const toml::table* original = rootIn["simulation"].as_table()) // the copy has no line numbers
+            io::refuseRenamedKeys(io::TableReader(*original, "[simulation]", file));
+        scene.settings.timeStep = sim.requiredNumber("dt");
+        sim.requirePositive("dt", scene.settings.timeStep, "s");
+        scene.duration = sim.requiredNumber("duration");
+        sim.requirePositive("duration", scene.duration, "s");
         scene.outputInterval = sim.number("output_interval", 0);
         sim.requireNonNegative("output_interval", scene.outputInterval, "s");
         scene.settleTime = sim.number("settle_time", 0);
         sim.requireNonNegative("settle_time", scene.settleTime, "s");
         scene.settings.gravity = gravity.value_or(Vec2{0, -9.81});
+        scene.vtk = sim.boolean("vtk", true);
+        scene.vtkFormat = sim.choice("vtk_format", "auto", {"auto", "ascii", "binary"});
         sim.finish();
     }
     top.table("simulation");
@@ -249,6 +259,12 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
     }
     if (scene.bodies.empty())
         throw InputError(file + ": no [[body]] table");
+    {
+        std::vector<const TriangleMesh*> meshes;
+        for (const auto& body : scene.bodies)
+            meshes.push_back(&body.mesh);
+        checkBodiesApart(meshes, bodyNames, file);
+    }
 
     // [[boundary]]
     if (toml::array* boundaries = root["boundary"].as_array())

@@ -24,10 +24,12 @@ struct SceneBoundary
 struct Scene
 {
     WorldSettings settings;
-    Real endTime = 0;                  ///< [s]
+    Real duration = 0;                 ///< simulated time after settling [s]
     Real outputInterval = 0;           ///< [s]; 0: first and last state only
     Real settleTime = 0;               ///< [s] run with zero body velocities before t = 0, then impose them
     Real settleNormalDampingRatio = 0; ///< zeta_n during the settling [1]
+    bool vtk = true;                   ///< write .vtu frames and series.pvd
+    std::string vtkFormat = "auto";    ///< "auto", "ascii" or "binary" (io::chooseVtkFormat)
     std::vector<std::string> materialNames;
     std::vector<Material> materials;
     std::vector<BodyDefinition> bodies;

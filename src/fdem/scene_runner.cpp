@@ -30,10 +30,11 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
     if (dt > limit.limit)
     {
         char message[256];
-        std::snprintf(message, sizeof message,
-                      "%s: time_step %g s exceeds the stable limit %g s (elements %g s, contact %g s); "
-                      "use --force-dt to run anyway",
-                      sceneFile.c_str(), dt, limit.limit, limit.element, limit.contact);
+        std::snprintf(
+            message, sizeof message,
+            "%s: [simulation] dt = %g s exceeds the stable limit %g s (elements %g s, contact %g s); "
+            "use --force-dt to run anyway",
+            sceneFile.c_str(), dt, limit.limit, limit.element, limit.contact);
         if (!allowUnstableTimeStep)
             throw InputError(message);
         std::fprintf(stderr, "veridem: warning: %s (running anyway)\n", message);
@@ -55,9 +56,9 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
                          static_cast<unsigned long long>(settleSteps));
     }
     const Real start = world.time();
-    OutputWriter output(outDir);
+    OutputWriter output(outDir, scene.vtk, io::chooseVtkFormat(scene.vtkFormat, world.nodes().size()));
     output.write(world, 0);
-    const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.endTime / dt));
+    const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / dt));
     const std::uint64_t outputEvery =
         scene.outputInterval > 0
             ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(scene.outputInterval / dt)))

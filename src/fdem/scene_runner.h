@@ -10,7 +10,7 @@ namespace veridem::fdem
 {
 
 /// Reads the scene, prints the stable time step (and refuses a larger one unless
-/// allowUnstableTimeStep), settles if asked, runs to end_time and writes the output to outDir.
+/// allowUnstableTimeStep), settles if asked, runs for the duration and writes the output to outDir.
 /// Returns the process exit code (0 on success). Input errors throw InputError.
 int runScene(const toml::table& scene, const std::string& sceneFile, const std::filesystem::path& outDir,
              bool progress, bool allowUnstableTimeStep);

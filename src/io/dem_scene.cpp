@@ -4,11 +4,14 @@
 #include "core/error.h"
 #include "dem/models/normal.h"
 #include "dem/walls/wall.h"
+#include "io/scene_limits.h"
 #include "io/toml_reader.h"
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -166,7 +169,10 @@ void placeOnWall(dem::World& world, std::uint32_t i, const dem::Wall& wall, bool
     }
 }
 
-void readParticleFile(TableReader& t, dem::World& world, const std::string& sceneFile)
+/// Reads a [[particles]] file of 'x y z' lines; `reserved` spheres are still to come from other
+/// tables. Lines are read with a length cap and counted against maxSphereCount() before each sphere
+/// is added, so a file without line ends (a device) or with too many lines cannot exhaust memory.
+void readParticleFile(TableReader& t, dem::World& world, const std::string& sceneFile, double reserved)
 {
     std::filesystem::path path = t.requiredString("file");
     if (path.is_relative())
@@ -176,49 +182,94 @@ void readParticleFile(TableReader& t, dem::World& world, const std::string& scen
     t.requirePositive("radius", radius, "m");
     const Vec3 velocity = t.vec3("velocity", {});
     t.finish();
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        t.fail("file", "is a directory: '" + path.string() + "'");
     std::ifstream in(path);
     if (!in)
         t.fail("file", "cannot be opened: '" + path.string() + "'");
-    std::string line;
+    constexpr std::streamsize kMaxLine = 4096; // characters per line, comments included
+    std::string line(kMaxLine, '\0');
     std::size_t lineNumber = 0;
-    while (std::getline(in, line))
+    const double limit = maxSphereCount();
+    auto where = [&] { return path.string() + ":" + std::to_string(lineNumber); };
+    while (in.getline(line.data(), kMaxLine) || in.gcount() > 0)
     {
         ++lineNumber;
-        if (line.empty() || line[0] == '#')
+        if (in.fail() && !in.eof()) // the line filled the buffer without ending
+            throw InputError(where() + ": line longer than " + std::to_string(kMaxLine - 1) +
+                             " characters: not a text file of 'x y z' lines");
+        const std::string_view text(line.data(), static_cast<std::size_t>(std::strlen(line.data())));
+        if (text.empty() || text[0] == '#')
             continue;
-        std::istringstream s(line);
+        std::istringstream s{std::string(text)};
         Vec3 x;
         if (!(s >> x.x >> x.y >> x.z) || !isFinite(x))
-            throw InputError(path.string() + ":" + std::to_string(lineNumber) +
-                             ": expected three numbers 'x y z' in metres");
+            throw InputError(where() + ": expected three numbers 'x y z' in metres");
+        if (double(world.particles.size()) + 1 + reserved > limit)
+            checkSphereCount(double(world.particles.size()) + 1 + reserved,
+                             "the [[particles]] file '" + path.string() + "' (to line " +
+                                 std::to_string(lineNumber) + ") and the other tables",
+                             sceneFile);
         world.particles.add(x, velocity, {}, radius, world.materials[material].density, material);
     }
+    if (in.bad())
+        throw InputError(path.string() + ": read error");
 }
 
-/// Fills a box with spheres on a cubic lattice (optionally jittered, deterministic seed).
-void readLattice(TableReader& t, dem::World& world)
+/// A box filled with spheres on a cubic lattice (optionally jittered, deterministic seed).
+struct Lattice
 {
-    const std::uint32_t material = world.materialId(t.requiredString("material"));
-    const Real radius = t.requiredNumber("radius");
-    t.requirePositive("radius", radius, "m");
+    std::uint32_t material = 0;
+    Real radius = 0, spacing = 0, jitter = 0;
+    Vec3 lo{}, velocity{};
+    long nx = 0, ny = 0, nz = 0;
+};
+
+/// Reads a [[lattice]] table and counts its spheres (in floating point, checked against
+/// maxSphereCount() before any conversion to an integer); allocates nothing.
+Lattice readLattice(TableReader& t, const dem::World& world)
+{
+    Lattice l;
+    l.material = world.materialId(t.requiredString("material"));
+    l.radius = t.requiredNumber("radius");
+    t.requirePositive("radius", l.radius, "m");
     const Vec3 lo = t.requiredVec3("min"), hi = t.requiredVec3("max");
-    const Real spacing = t.number("spacing", 2.2 * radius);
-    if (!(spacing >= 2 * radius))
+    l.spacing = t.number("spacing", 2.2 * l.radius);
+    if (!(l.spacing >= 2 * l.radius) || !std::isfinite(l.spacing))
         t.fail("spacing", "must be >= 2 radius so the spheres do not overlap");
-    const Real jitter = t.number("jitter", 0.0);
-    if (!(jitter >= 0 && jitter <= 0.5 * (spacing - 2 * radius)))
+    l.jitter = t.number("jitter", 0.0);
+    if (!(l.jitter >= 0 && l.jitter <= 0.5 * (l.spacing - 2 * l.radius)))
         t.fail("jitter", "must be in [0, (spacing - 2 radius)/2] m so the spheres do not overlap");
-    const Vec3 velocity = t.vec3("velocity", {});
+    l.velocity = t.vec3("velocity", {});
     t.finish();
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
         t.fail("max", "must be above 'min' in x, y and z");
-    auto count = [&](Real a, Real b)
-    { return static_cast<long>(std::floor((b - a - 2 * radius) / spacing)) + 1; };
-    const long nx = count(lo.x, hi.x), ny = count(lo.y, hi.y), nz = count(lo.z, hi.z);
-    if (nx <= 0 || ny <= 0 || nz <= 0)
+    auto count = [&](Real a, Real b) { return std::floor((b - a - 2 * l.radius) / l.spacing) + 1; };
+    const Real nx = count(lo.x, hi.x), ny = count(lo.y, hi.y), nz = count(lo.z, hi.z);
+    if (!(nx >= 1 && ny >= 1 && nz >= 1))
         t.fail("max", "the box is smaller than one sphere");
-    if (double(nx) * double(ny) * double(nz) > 2e7)
-        t.fail("spacing", "would create more than 2e7 spheres");
+    if (!(nx * ny * nz <= maxSphereCount()))
+    {
+        std::ostringstream s;
+        s << "with 'min', 'max' and 'spacing' would create " << std::setprecision(3) << nx * ny * nz
+          << " spheres (at most " << maxSphereCount() << " in a scene)";
+        t.fail("spacing", s.str());
+    }
+    l.lo = lo;
+    l.nx = static_cast<long>(nx);
+    l.ny = static_cast<long>(ny);
+    l.nz = static_cast<long>(nz);
+    return l;
+}
+
+double sphereCount(const Lattice& l)
+{
+    return double(l.nx) * double(l.ny) * double(l.nz);
+}
+
+void fillLattice(const Lattice& l, dem::World& world)
+{
     std::uint64_t state = 0x9E3779B97F4A7C15ull; // splitmix64: the same lattice on every machine
     auto uniform = [&]()
     {
@@ -229,15 +280,15 @@ void readLattice(TableReader& t, dem::World& world)
         z ^= z >> 31;
         return double(z >> 11) * 0x1.0p-53 * 2.0 - 1.0;
     };
-    const Real density = world.materials[material].density;
-    for (long k = 0; k < nz; ++k)
-        for (long j = 0; j < ny; ++j)
-            for (long i = 0; i < nx; ++i)
+    const Real density = world.materials[l.material].density;
+    for (long k = 0; k < l.nz; ++k)
+        for (long j = 0; j < l.ny; ++j)
+            for (long i = 0; i < l.nx; ++i)
             {
-                Vec3 x{lo.x + radius + Real(i) * spacing, lo.y + radius + Real(j) * spacing,
-                       lo.z + radius + Real(k) * spacing};
-                x += jitter * Vec3{uniform(), uniform(), uniform()};
-                world.particles.add(x, velocity, {}, radius, density, material);
+                Vec3 x{l.lo.x + l.radius + Real(i) * l.spacing, l.lo.y + l.radius + Real(j) * l.spacing,
+                       l.lo.z + l.radius + Real(k) * l.spacing};
+                x += l.jitter * Vec3{uniform(), uniform(), uniform()};
+                world.particles.add(x, l.velocity, {}, l.radius, density, l.material);
             }
 }
 
@@ -312,6 +363,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     if (!simulation)
         top.fail("simulation", "is missing: every scene needs a [simulation] table with dt and duration");
     simulation->choice("type", "dem", {"dem", "fdem2d"});
+    refuseRenamedKeys(*simulation);
     scene.dt = simulation->requiredNumber("dt");
     simulation->requirePositive("dt", scene.dt, "s");
     scene.duration = simulation->requiredNumber("duration");
@@ -331,6 +383,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     scene.characteristicSpeed = simulation->number("characteristic_speed", 0.0);
     simulation->requireNonNegative("characteristic_speed", scene.characteristicSpeed, "m/s");
     scene.writeVtk = simulation->boolean("vtk", true);
+    const std::string vtkFormat = simulation->choice("vtk_format", "auto", {"auto", "ascii", "binary"});
     simulation->finish();
 
     auto materials = top.arrayOfTables("material");
@@ -371,14 +424,27 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         else if (noSlip)
             s.fail("no_slip", "needs on_wall = \"<wall name>\" to know which surface to roll on");
     }
-    for (auto& f : top.arrayOfTables("particles"))
-        readParticleFile(f, world, file);
+    // Count before allocating: the lattices are read (not filled) first, the particle files are
+    // read against the budget left; the order of the spheres stays [[sphere]], files, lattices.
+    std::vector<Lattice> lattices;
+    double latticeSpheres = 0;
     for (auto& l : top.arrayOfTables("lattice"))
-        readLattice(l, world);
+    {
+        lattices.push_back(readLattice(l, world));
+        latticeSpheres += sphereCount(lattices.back());
+    }
+    const double planned = double(world.particles.size()) + latticeSpheres;
+    checkSphereCount(planned, "the [[sphere]] and [[lattice]] tables", file);
+    for (auto& f : top.arrayOfTables("particles"))
+        readParticleFile(f, world, file, latticeSpheres);
+    for (const Lattice& l : lattices)
+        fillLattice(l, world);
     top.finish();
 
     if (world.particles.size() == 0)
         throw InputError(file + ": the scene has no particles ([[sphere]], [[particles]] or [[lattice]])");
+    checkSphereRanges(world, scene.dt, file);
+    scene.vtkFormat = chooseVtkFormat(vtkFormat, world.particles.size());
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
     checkInitialOverlaps(world, overlapTolerance); // also builds the pair table

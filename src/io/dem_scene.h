@@ -4,6 +4,7 @@
 #pragma once
 
 #include "dem/world.h"
+#include "io/vtk_xml.h"
 
 #include <toml++/toml.h>
 
@@ -21,6 +22,7 @@ struct DemScene
     Real maxOverlapFraction = 0.5; // blow-up threshold: overlap / radius [-]
     Real characteristicSpeed = 1;  // [m/s], sizes the Hertz stiffness in the time-step estimate
     bool writeVtk = true;
+    io::VtkFormat vtkFormat = io::VtkFormat::Ascii; // vtk_format, "auto" resolved by the sphere count
 };
 
 /// Builds the scene; `file` is used in messages and to resolve relative particle-file paths.

@@ -3,96 +3,119 @@
 #include "core/error.h"
 
 #include <cstdio>
-#include <iomanip>
 
 namespace veridem::io
 {
 
-ParticleRecorder::ParticleRecorder(const std::filesystem::path& directory, bool writeVtk)
-    : directory_(directory), writeVtk_(writeVtk)
+ParticleRecorder::ParticleRecorder(const std::filesystem::path& directory, bool vtk, VtkFormat format)
+    : directory_(directory), vtk_(vtk), format_(format)
 {
     std::error_code error;
     std::filesystem::create_directories(directory_, error);
     if (error)
-        throw InputError("cannot create output directory '" + directory_.string() + "': " + error.message());
+        throw OutputError("cannot create output directory '" + directory_.string() + "': " + error.message());
     csv_.open(directory_ / "particles.csv");
-    if (!csv_)
-        throw InputError("cannot write '" + (directory_ / "particles.csv").string() + "'");
-    csv_ << "t,id,x,y,z,vx,vy,vz,wx,wy,wz\n" << std::setprecision(10);
+    csv_.stream() << "t,id,x,y,z,vx,vy,vz,wx,wy,wz\n";
+    csv_.flush();
 }
 
 void ParticleRecorder::record(const dem::World& world)
 {
     const auto& p = world.particles;
+    std::string rows;
+    std::string time;
+    appendNumber(time, world.time);
+    constexpr std::size_t kChunk = 1 << 20; // bytes buffered before a write
+    rows.reserve(kChunk + 512);
     for (std::size_t i = 0; i < p.size(); ++i)
     {
         const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
-        csv_ << world.time << ',' << i << ',' << x.x << ',' << x.y << ',' << x.z << ',' << v.x << ',' << v.y
-             << ',' << v.z << ',' << w.x << ',' << w.y << ',' << w.z << '\n';
+        rows += time;
+        rows += ',';
+        rows += std::to_string(i);
+        for (const Real value : {x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z})
+        {
+            rows += ',';
+            appendNumber(rows, value);
+        }
+        rows += '\n';
+        if (rows.size() >= kChunk)
+        {
+            csv_.stream().write(rows.data(), static_cast<std::streamsize>(rows.size()));
+            rows.clear();
+        }
     }
+    csv_.stream().write(rows.data(), static_cast<std::streamsize>(rows.size()));
     csv_.flush();
-    if (writeVtk_)
+    if (vtk_)
     {
         char name[64];
         std::snprintf(name, sizeof name, "particles_%06zu.vtp", frameTimes_.size());
         writeVtp(world, directory_ / name);
     }
     frameTimes_.push_back(world.time);
-    if (writeVtk_ && frameTimes_.size() % 50 == 1)
+    if (vtk_)
         writePvd();
 }
 
-ParticleRecorder::~ParticleRecorder()
+void ParticleRecorder::close()
 {
-    if (writeVtk_)
-        writePvd();
+    csv_.close();
 }
 
 void ParticleRecorder::writeVtp(const dem::World& world, const std::filesystem::path& path) const
 {
     const auto& p = world.particles;
-    std::ofstream out(path);
-    out << std::setprecision(10);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
-           "byte_order=\"LittleEndian\">\n"
-        << "<PolyData>\n<Piece NumberOfPoints=\"" << p.size()
+    const std::size_t n = p.size();
+    AtomicFile file(path);
+    std::ostream& out = file.stream();
+    VtkXmlArrays arrays(format_);
+    out << arrays.vtkFileOpening("PolyData") << "<PolyData>\n<Piece NumberOfPoints=\"" << n
         << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
-    out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const Vec3& x : p.position)
-        out << x.x << ' ' << x.y << ' ' << x.z << '\n';
-    out << "</DataArray>\n</Points>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
-    out << "<DataArray type=\"Int64\" Name=\"id\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < p.size(); ++i)
-        out << i << '\n';
-    out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n";
-    for (Real r : p.radius)
-        out << r << '\n';
-    out << "</DataArray>\n";
-    auto vectors = [&](const char* name, const std::vector<Vec3>& values)
+    std::vector<double> flat(3 * n);
+    auto vectors = [&](const std::vector<Vec3>& values)
     {
-        out << "<DataArray type=\"Float64\" Name=\"" << name
-            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-        for (const Vec3& v : values)
-            out << v.x << ' ' << v.y << ' ' << v.z << '\n';
-        out << "</DataArray>\n";
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            flat[3 * i] = values[i].x;
+            flat[3 * i + 1] = values[i].y;
+            flat[3 * i + 2] = values[i].z;
+        }
+        return flat.data();
     };
-    vectors("velocity", p.velocity);
-    vectors("angular_velocity", p.angularVelocity);
-    out << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+    out << "<Points>\n";
+    arrays.float64(out, "", 3, vectors(p.position), 3 * n);
+    out << "</Points>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
+    std::vector<std::int64_t> ids(n);
+    for (std::size_t i = 0; i < n; ++i)
+        ids[i] = static_cast<std::int64_t>(i);
+    arrays.int64(out, "id", 1, ids.data(), n);
+    arrays.float64(out, "radius", 1, p.radius.data(), n);
+    arrays.float64(out, "velocity", 3, vectors(p.velocity), 3 * n);
+    arrays.float64(out, "angular_velocity", 3, vectors(p.angularVelocity), 3 * n);
+    out << "</PointData>\n</Piece>\n</PolyData>\n";
+    arrays.finish(out);
+    file.commit();
 }
 
 void ParticleRecorder::writePvd() const
 {
-    std::ofstream out(directory_ / "particles.pvd");
-    out << std::setprecision(12);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+    AtomicFile file(directory_ / "particles.pvd");
+    std::string text =
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
     for (std::size_t k = 0; k < frameTimes_.size(); ++k)
     {
         char name[64];
         std::snprintf(name, sizeof name, "particles_%06zu.vtp", k);
-        out << "<DataSet timestep=\"" << frameTimes_[k] << "\" file=\"" << name << "\"/>\n";
+        text += "<DataSet timestep=\"";
+        appendNumber(text, frameTimes_[k]);
+        text += "\" file=\"";
+        text += name;
+        text += "\"/>\n";
     }
-    out << "</Collection>\n</VTKFile>\n";
+    text += "</Collection>\n</VTKFile>\n";
+    file.stream() << text;
+    file.commit();
 }
 
 } // namespace veridem::io

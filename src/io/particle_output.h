@@ -1,16 +1,20 @@
 // Output of a DEM run, written between steps by the driver (never inside the step):
-//   DIR/particles.csv        t,id,x,y,z,vx,vy,vz,wx,wy,wz (SI units) at every output time
-//   DIR/particles_NNNNNN.vtp ParaView PolyData per output (radius, velocity, angular_velocity)
-//   DIR/particles.pvd        the series; rewritten every 50 outputs and when the recorder is
-//                            destroyed (also on a blow-up), so a run that stops early still
-//                            leaves a readable series
-// Files are flushed at every output, so everything written before a blow-up stays readable.
+//   DIR/particles.csv        t,id,x,y,z,vx,vy,vz,wx,wy,wz (SI units) at every output time, each
+//                            number in its shortest round-trip form (reads back to the same bits)
+//   DIR/particles_NNNNNN.vtp ParaView PolyData per output (radius, velocity, angular_velocity),
+//                            ASCII or appended zlib-compressed binary (VtkFormat)
+//   DIR/particles.pvd        the series, rewritten under a temporary name and renamed at every
+//                            output, so it is complete at any moment (also after a kill)
+// Every write is checked: a failure throws OutputError naming the file and the run stops. The CSV
+// is flushed at every output, and each .vtp is written under a temporary name and renamed.
 #pragma once
 
 #include "dem/world.h"
+#include "io/output_file.h"
+#include "io/vtk_xml.h"
 
 #include <filesystem>
-#include <fstream>
+#include <string>
 #include <vector>
 
 namespace veridem::io
@@ -19,11 +23,13 @@ namespace veridem::io
 class ParticleRecorder
 {
   public:
-    ParticleRecorder(const std::filesystem::path& directory, bool writeVtk);
-    ~ParticleRecorder(); // completes the .pvd series (also when a run stops on an error)
+    /// Without `vtk`, only the CSV is written.
+    ParticleRecorder(const std::filesystem::path& directory, bool vtk, VtkFormat format);
     ParticleRecorder(const ParticleRecorder&) = delete;
     ParticleRecorder& operator=(const ParticleRecorder&) = delete;
     void record(const dem::World& world);
+    /// Closes the CSV, checking the last writes.
+    void close();
     std::size_t framesWritten() const { return frameTimes_.size(); }
 
   private:
@@ -31,8 +37,9 @@ class ParticleRecorder
     void writePvd() const;
 
     std::filesystem::path directory_;
-    bool writeVtk_;
-    std::ofstream csv_;
+    bool vtk_;
+    VtkFormat format_;
+    AppendFile csv_;
     std::vector<double> frameTimes_;
 };
 

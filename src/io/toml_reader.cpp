@@ -1,10 +1,12 @@
 #include "io/toml_reader.h"
 
 #include "core/error.h"
+#include "io/toml_guard.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace veridem::io
@@ -68,16 +70,37 @@ std::size_t editDistance(std::string_view a, std::string_view b)
 
 toml::table parseFile(const std::string& path)
 {
-    if (!std::filesystem::is_regular_file(path))
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (!std::filesystem::exists(status))
         throw InputError(path + ": no such scene file");
+    if (std::filesystem::is_directory(status))
+        throw InputError(path + ": is a directory, not a scene file");
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(path + ": is not a regular file (a scene is a TOML text file)");
+    const auto size = std::filesystem::file_size(path, error);
+    if (error || size > kMaxSceneFileBytes)
+        throw InputError(path + ": the scene file is larger than " +
+                         std::to_string(kMaxSceneFileBytes >> 20) +
+                         " MiB (bulk particle positions belong in a [[particles]] file)");
+    std::ifstream in(path, std::ios::binary);
+    std::string text(static_cast<std::size_t>(size), '\0');
+    if (!in || !in.read(text.data(), static_cast<std::streamsize>(size)))
+        throw InputError(path + ": cannot read the scene file");
+    return parseText(text, path);
+}
+
+toml::table parseText(std::string_view text, const std::string& source)
+{
+    checkTomlText(text, source); // before toml++ sees it: input on which the library misbehaves
     try
     {
-        return toml::parse_file(path);
+        return toml::parse(text, source);
     }
     catch (const toml::parse_error& e)
     {
         std::ostringstream s;
-        s << path;
+        s << source;
         if (e.source().begin.line > 0)
             s << ":" << e.source().begin.line << ":" << e.source().begin.column;
         s << ": TOML syntax error: " << e.description();
@@ -275,6 +298,16 @@ std::vector<TableReader> TableReader::arrayOfTables(std::string_view key)
         out.emplace_back(*element.as_table(), "[[" + std::string(key) + "]] #" + std::to_string(++index),
                          file_);
     return out;
+}
+
+void refuseRenamedKeys(const TableReader& simulation)
+{
+    static const std::pair<const char*, const char*> kRenamed[] = {
+        {"time_step", "dt"}, {"timestep", "dt"}, {"end_time", "duration"}, {"write_vtk", "vtk"}};
+    for (const auto& [other, key] : kRenamed)
+        if (simulation.has(other))
+            simulation.fail(other, std::string("is not a key: use '") + key +
+                                       "' (the same name in 2D and 3D scenes, docs/scene-format.md)");
 }
 
 void TableReader::finish() const

@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
@@ -65,8 +66,20 @@ class TableReader
     std::set<std::string, std::less<>> used_;
 };
 
-/// Parses a TOML file; a syntax error becomes an InputError with file:line:column.
+/// The [simulation] keys shared by the 3D and 2D scenes have one name each (docs/scene-format.md):
+/// a key of the other vocabulary ('time_step', 'end_time', 'timestep', 'write_vtk') is refused
+/// with its line and the key to use instead.
+void refuseRenamedKeys(const TableReader& simulation);
+
+/// Largest scene file read [bytes]; bulk positions go in [[particles]] files.
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 64u << 20;
+
+/// Parses a TOML file; a syntax error becomes an InputError with file:line:column. A missing path,
+/// a directory, a device or a file above kMaxSceneFileBytes is refused before reading.
 toml::table parseFile(const std::string& path);
+
+/// Parses TOML text (checkTomlText first); `source` names it in messages.
+toml::table parseText(std::string_view text, const std::string& source);
 
 /// Edit distance used to suggest the nearest valid key.
 std::size_t editDistance(std::string_view a, std::string_view b);

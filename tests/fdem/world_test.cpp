@@ -101,8 +101,8 @@ toml::table parse(const std::string& text)
 const char* kScene = R"(
 [simulation]
 type = "fdem2d"
-time_step = 1e-6
-end_time = 0.01
+dt = 1e-6
+duration = 0.01
 gravity = [0.0, -9.81]
 [contact]
 normal_penalty = 1e10
@@ -187,7 +187,7 @@ TEST(Scene, ReadsAPolygonBodyAndRejectsTwoGeometries)
 TEST(SceneRunner, RefusesATimeStepAboveTheLimitAndRunsBelowIt)
 {
     std::string s = kScene;
-    s.replace(s.find("time_step = 1e-6"), 16, "time_step = 1e-4");
+    s.replace(s.find("dt = 1e-6"), 9, "dt = 1e-4");
     const auto out = std::filesystem::temp_directory_path() / "veridem_fdem_runner_test";
     try
     {
@@ -199,7 +199,7 @@ TEST(SceneRunner, RefusesATimeStepAboveTheLimitAndRunsBelowIt)
         EXPECT_NE(std::string(e.what()).find("exceeds the stable limit"), std::string::npos) << e.what();
     }
     std::string ok = kScene;
-    ok.replace(ok.find("end_time = 0.01"), 15, "end_time = 1e-4");
+    ok.replace(ok.find("duration = 0.01"), 15, "duration = 1e-4");
     EXPECT_EQ(runScene(parse(ok), "test.toml", out, false, false), 0);
     EXPECT_TRUE(std::filesystem::exists(out / "series.pvd"));
     EXPECT_TRUE(std::filesystem::exists(out / "bodies.csv"));
