@@ -91,6 +91,12 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
         plane.normal = normal / length(normal);
         wall.shape = plane;
         wall.motion.velocity = t.vec3("velocity", {});
+        wall.motion.oscillationAmplitude = t.vec3("oscillation_amplitude", {});
+        wall.motion.oscillationAngularFrequency = t.number("oscillation_omega", 0.0);
+        if (wall.motion.oscillationAngularFrequency < 0)
+            t.fail("oscillation_omega", "must be >= 0 rad/s");
+        if (wall.motion.oscillationAngularFrequency > 0 && length(wall.motion.velocity) > 0)
+            t.fail("oscillation_omega", "an oscillating plane cannot also have a steady velocity");
         const Real omega = t.number("omega", 0.0);
         wall.motion.angularVelocity = omega * plane.normal;
         wall.motion.rotationCentre = plane.point;
