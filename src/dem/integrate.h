@@ -217,7 +217,8 @@ inline void moveWalls(std::vector<Wall>& walls, Real dt)
         if (omega > 0)
         {
             w.displacement = std::sin(omega * w.clock) * w.motion.oscillationAmplitude;
-            w.motion.velocity = (omega * std::cos(omega * (w.clock - 0.5 * dt))) * w.motion.oscillationAmplitude;
+            w.motion.velocity =
+                (omega * std::cos(omega * (w.clock - 0.5 * dt))) * w.motion.oscillationAmplitude;
         }
         else
             w.displacement += dt * w.motion.velocity;
