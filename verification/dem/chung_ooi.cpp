@@ -109,7 +109,7 @@ Outcome runUntilSeparated(World& world, Real dt, Real friction, const std::funct
 } // namespace
 
 Outcome wallImpact(const Solid& ball, Real restitution, Real friction, Real radius, Vec3 v0, Vec3 w0,
-                   Real stepsPerContact, const CaseContext&, bool keepHistory)
+                   Real stepsPerContact, const CaseContext&, bool keepHistory, Real startSteps)
 {
     World world = worldWith(hertzMaterial(ball, restitution, friction), {0, 0, 0});
     Solid rigid = ball;
@@ -123,8 +123,7 @@ Outcome wallImpact(const Solid& ball, Real restitution, Real friction, Real radi
     const Real vn = std::fabs(v0.z);
     const Real tc = hertzImpact(mass, radius, effectiveModulus(ball, true), vn).contactTime;
     const Real dt = tc / stepsPerContact;
-    // Start 2.5 steps of travel above the plane so that first touch falls between steps.
-    world.particles.add({0, 0, radius + 2.5 * vn * dt}, v0, w0, radius, ball.density, 0);
+    world.particles.add({0, 0, radius + startSteps * vn * dt}, v0, w0, radius, ball.density, 0);
     return runUntilSeparated(
         world, dt, friction, [radius](const World& w) { return w.particles.position[0].z - radius; },
         [](const World&) {

@@ -75,9 +75,11 @@ struct Outcome
 
 /// A sphere of `ball` (radius [m]) hits the rigid plane z = 0 with centre velocity v0 and angular
 /// velocity w0; runs until it separates. dt = t_c / stepsPerContact with t_c from hertzImpact at
-/// the normal speed.
+/// the normal speed. The ball starts `startSteps` steps of normal travel above the plane (the
+/// fraction sets where first touch falls between steps).
 Outcome wallImpact(const Solid& ball, Real restitution, Real friction, Real radius, Vec3 v0, Vec3 w0,
-                   Real stepsPerContact, const CaseContext& context, bool keepHistory = false);
+                   Real stepsPerContact, const CaseContext& context, bool keepHistory = false,
+                   Real startSteps = 2.5);
 
 /// Sphere 1 (radius r1) starts touching distance above sphere 2 (radius r2, density scaled by
 /// `densityFactor2`) along +z, both of `solid`; velocities and spins given; runs until separation.
