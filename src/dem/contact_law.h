@@ -27,6 +27,7 @@ struct ContactInput
     Real effectiveRadius = 0;     // R* [m] (Hertz, and R_r for dimensionless rolling friction)
     Real rollingInertia = 0;      // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
     Real spinInertia = 0;         // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
+    Vec3 angularVelocity;         // w_i, particle i's own [rad/s] (absolute-frame type A only)
 };
 
 /// Per-contact history carried from step to step.
@@ -152,6 +153,16 @@ VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const Cont
             epsdRollingTorque(kr, cr, muR, normalForce, history.rollingSpring, resistedAngularVelocity, dt);
         history.rollingSpring = r.spring;
         rollingTorque = r.torque;
+    }
+    else if (p.rollingModel == RollingModel::Viscous)
+    {
+        rollingTorque =
+            viscousRollingTorque(p.rollingViscous, in.effectiveRadius, normalForce, resistedAngularVelocity);
+    }
+    else if (p.rollingModel == RollingModel::ConstantTorqueAbsolute)
+    {
+        rollingTorque = constantRollingTorque(rollingFrictionLength(p, in.effectiveRadius), normalForce,
+                                              in.angularVelocity, in.spinInertia, dt);
     }
     return ContactOutput{normalForce * in.normal + t.force, t.force, rollingTorque, normalForce, t.sliding};
 }

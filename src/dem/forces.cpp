@@ -74,7 +74,9 @@ struct ExtraInputs
 ExtraInputs extraInputsFor(const PairParams& params)
 {
     return {params.normalModel == NormalModel::Hertz || params.rollingModel != RollingModel::None,
-            params.rollingModel == RollingModel::ConstantTorque, params.rollingModel == RollingModel::Epsd};
+            params.rollingModel == RollingModel::ConstantTorque ||
+                params.rollingModel == RollingModel::ConstantTorqueAbsolute,
+            params.rollingModel == RollingModel::Epsd};
 }
 
 /// Where the pair loop writes. Array bases are held in locals: a byte store (mayBeActive) may alias
@@ -921,6 +923,7 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     in.relativeVelocity = p.velocity[i] - p.velocity[j] -
                           cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
     in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+    in.angularVelocity = p.angularVelocity[i];
     in.effectiveMass = list.activeMass[k];
     if (extra.effectiveRadius)
         in.effectiveRadius = ri * rj / touching;
@@ -1313,6 +1316,7 @@ VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const W
     in.relativeVelocity =
         velocity + cross(angularVelocity, arm) - wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
     in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
+    in.angularVelocity = angularVelocity;
     in.effectiveMass = s.mass;
     in.effectiveRadius = gap.effectiveRadius;
     in.spinInertia = 1.0 / s.invInertia;

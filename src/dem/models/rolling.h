@@ -13,6 +13,11 @@
 //     dMk = -kr w_rel dt, |Mk| <= muR Fn,  kr = 2.25 kn muR^2   (kn muR'^2 R_r^2 form),
 //     Md  = -Cr w_rel while |Mk| < muR Fn (zero once fully mobilised), Cr = etaR 2 sqrt(I_r kr).
 //   It holds a ball at rest on an incline with tan(theta) <= muR'.
+//
+// Type B, viscous, and the absolute-frame variant of type A (M = -muR Fn w_i/|w_i| with the
+// particle's own w_i, as EDEM's "standard" rolling friction and MUSEN apply it) are selectable
+// too; the absolute variant is not objective on moving walls (rolling_resistance_models shows the
+// consequence) and, for particle pairs, uses particle i's w and applies the reaction to j.
 #pragma once
 
 #include "core/hot.h"
@@ -36,6 +41,18 @@ inline Vec3 constantRollingTorque(Real muR, Real normalForce, const Vec3& relati
     // Fn > 0 here, so neither operand is NaN unless an input is).
     const Real mobilised = muR * normalForce / w, stopping = rollingInertia / dt;
     return relativeAngularVelocity * -(mobilised < stopping ? mobilised : stopping);
+}
+
+/// Type B, viscous (Ai et al. 2011's class B; the torque grows with the rolling speed as in the
+/// viscoelastic rolling friction of Brilliantov & Poeschel 1998): M = -c_r Fn R_r^2 w_rel,
+/// c_r [s/m], R_r [m], Fn [N] (clipped >= 0). A ball rolling on a plane slows as exp(-(5/7) c_r g t)
+/// and on an incline tends to v = tan(theta)/c_r; it never holds a ball at rest on a slope.
+inline Vec3 viscousRollingTorque(Real coefficient, Real rollingRadius, Real normalForce,
+                                 const Vec3& relativeAngularVelocity)
+{
+    if (normalForce <= 0)
+        return Vec3{};
+    return relativeAngularVelocity * -(coefficient * normalForce * rollingRadius * rollingRadius);
 }
 
 struct RollingSpringResult
