@@ -15,7 +15,10 @@
 //   friction, no-slip tangential spring (linear, and Hertz-Mindlin against its integrated
 //     no-slip reference): 1. The spring adds the slip of the whole step in which the contact
 //     begins (and ends), although the contact covers only part of it: an O(v_t dt) error in xi;
-//   rolling, viscous (type B) spin-down: see rolling_resistance_models.
+//   rolling, viscous (type B) spin-down: 1. The torque -c_r Fn R^2 w uses the half-step w, so the
+//     decay rate is integrated with an O(dt) lag; the speed also carries a dt-independent offset
+//     of the elastic contact (lever arm a - delta), so the order is taken from successive
+//     differences q(dt) - q(dt/2), q(dt/2) - q(dt/4) (dt = tau/50000 .. tau/200000).
 // Each impact starts a fixed number of steps of travel before first touch, so that first touch
 // falls at the same fraction of a step at every dt.
 // Margin: |p - p_expected| <= 0.3, i.e. the error ratio between levels within a factor 2^0.3 =
@@ -64,9 +67,27 @@ struct Study
 {
     std::string name;
     Real expectedOrder;
-    std::vector<Real> steps;         // steps per contact of the levels (doubling)
-    std::function<Real(Real)> error; // error at `steps` per contact
+    std::vector<Real> steps;         // steps per contact (per reference time) of the levels, doubling
+    std::function<Real(Real)> error; // error at `steps`; with `differences`, the measured value
+    bool differences = false;        // order from successive differences (a dt-independent model offset)
 };
+
+// Type B (viscous) rolling on a plane: the ball's speed after tau = 7/(5 c_r g) = 2 s, dt = tau/n.
+Real viscousRollSpeed(Real n, const CaseContext& context)
+{
+    Material m = flatTurntableBall();
+    m.rollingModel = dem::RollingModel::Viscous;
+    m.rollingFrictionLength = 0;
+    const Real tau = 2.0, v0 = 0.1, a = kFlatBallRadius;
+    m.rollingViscousCoefficient = 7.0 / (5.0 * kG * tau);
+    World world = worldWith(m, {0, 0, -kG});
+    world.walls.push_back(floorWall());
+    const Real mass = sphereMass(m.density, a);
+    world.particles.add({0, 0, a - mass * kG / m.normalStiffness}, {v0, 0, 0}, {0, v0 / a, 0}, a, m.density,
+                        0);
+    runFor(world, tau, tau / n, context, "convergence_orders", nullptr);
+    return world.particles.velocity[0].x;
+}
 
 // Largest error over eight start phases (first touch at 0, 1/8, ..., 7/8 of a step): for the Hertz
 // damping the error depends on where the contact ends between steps (see above), and its envelope
@@ -127,17 +148,27 @@ CaseResult convergenceRun(const CaseContext& context)
                      return std::fabs(psi2 / 0.05 - noSlipSteel);
                  });
          }},
+        {"rolling: type B spin-down, v(tau) (successive differences)",
+         1.0,
+         {50000, 100000, 200000},
+         [&](Real n) { return viscousRollSpeed(n, context); },
+         true},
     };
     CaseResult r;
     Series s{"orders", {"study", "dt_over_tc", "error", "error_expected_slope"}, {}};
     int index = 0;
     for (const Study& study : studies)
     {
-        std::vector<Real> logDt, logError, errors;
+        std::vector<Real> logDt, logError, errors, values;
         for (const Real n : study.steps)
+            values.push_back(study.error(n));
+        // With `differences` the error of level i is estimated as |q_i - q_(i+1)| (the finest level
+        // only serves as the reference of the one before).
+        const std::size_t levels = study.differences ? values.size() - 1 : values.size();
+        for (std::size_t i = 0; i < levels; ++i)
         {
-            errors.push_back(study.error(n));
-            logDt.push_back(std::log2(1 / n));
+            errors.push_back(study.differences ? std::fabs(values[i] - values[i + 1]) : values[i]);
+            logDt.push_back(std::log2(1 / study.steps[i]));
             logError.push_back(std::log2(errors.back()));
         }
         std::string orders;
