@@ -718,6 +718,7 @@ def write_html(out_dir, cases, figures):
       "vertical-align:top}th{background:#eee}.pass{color:#070;font-weight:bold}.fail{color:#b00;font-weight:bold}"
       "td.num{text-align:right;font-family:monospace;white-space:nowrap}.why{color:#555;font-size:11px}"
       "figure{display:inline-block;margin:6px;vertical-align:top}figure img{max-width:620px;border:1px solid #ddd}"
+      "figure img.wide{max-width:1240px}"
       "figcaption{font-size:12px;color:#444}.notes{font-size:12px;color:#333}"
       "table.summary{font-size:14px;width:auto}table.summary td{padding:5px 10px}"
       "details{margin:0.8em 0}summary{cursor:pointer;font-weight:bold;color:#245}"
@@ -770,7 +771,8 @@ def write_html(out_dir, cases, figures):
             if sub and sub != subsection:
                 w(f"<h3>{html.escape(sub)}</h3>")
                 subsection = sub
-            w(f"<figure><a href='{path}'><img src='{path}' alt='{html.escape(fig_title)}'></a>"
+            wide = " class='wide'" if path.endswith(("_sweep.png", "_force.png", "_orders.png")) else ""
+            w(f"<figure><a href='{path}'><img{wide} src='{path}' alt='{html.escape(fig_title)}'></a>"
               f"<figcaption>{html.escape(fig_title)}</figcaption></figure>")
         quantities = sum(len(c.get("quantities", [])) for c in members)
         w(f"<details{' open' if failed else ''}><summary>Detailed table: {len(members)} cases, {quantities} "
