@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Draws the verification report: DIR/index.html and PNG figures. The page opens with a summary per
 family of cases (cases, passed, worst error over tolerance) linking to one section per family with
-its figures and its detailed table folded (<details>); FAMILIES below sorts the cases.
+its figures and its detailed table folded (<details>). Helpers: report_util.py (series, saving),
+report_families.py (FAMILIES, which sorts the cases, and the benchmark families' figures),
+report_html.py (the page).
 
 Usage: report.py DIR RESULTS_JSON
 
@@ -25,8 +27,6 @@ editing this script):
 Only the Python standard library, numpy and matplotlib (Debian python3-matplotlib, Agg backend).
 """
 
-import csv
-import html
 import json
 import math
 import os
@@ -38,6 +38,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from report_families import (CHUNG_OOI_PANELS, chung_ooi_force_figure, chung_ooi_restitution_figure,  # noqa: E402
+                             chung_ooi_sweep_figure, convergence_figure, family_of, rolling_frames_figure)
+from report_html import write_html  # noqa: E402
+from report_util import column, read_series, save  # noqa: E402
 
 GRAVITY = 9.81
 DISH_RADIUS = 20.0
@@ -69,73 +74,6 @@ TURNTABLE_FIGURES = {
 # Axis labels for series columns a generic plot recognises (column name or prefix before "_").
 UNITS = {"t": "t (s)", "h": "height h (m)", "x": "x (m)", "y": "y (m)", "z": "z (m)", "v": "v (m/s)",
          "omega": "Ω (rad/s)", "rho": "ρ (m)", "energy": "energy (J)"}
-
-CONVENTIONS = [
-    "SI units throughout; angles in the table plane from east (+x) counter-clockwise; tables and dishes "
-    "turn counter-clockwise seen from above.",
-    "Contact radius: a sphere-wall contact uses the undeformed radius as the lever arm and for the contact-point "
-    "velocity; a sphere-sphere contact splits the centre distance in proportion to the radii.",
-    "Rolling friction (type A, the paper's eq. 3): M = −μr F_n ω̂_rel, where ω_rel is the angular velocity "
-    "relative to the contact partner (the wall's own angular velocity for a turning wall), twist about the "
-    "normal included; μr is a length in m (μr' = μr/a is the dimensionless form).",
-    "Normal dashpot not clipped: the normal force may be slightly attractive just before separation, so e equals "
-    "the value set.",
-    "The wall's surface velocity is taken at the half-step contact point, consistent with the half-step "
-    "particle velocities of velocity Verlet.",
-]
-
-DECISIONS = [
-    "Flat-turntable stiffness k = 1.0e5 N/m (the paper's table is truncated), kt = 2/7 k.",
-    "Initial velocities in the captions are lab-frame; the no-slip start sets the spin so that the contact point "
-    "moves with the table, with zero spin about the table normal.",
-    "Test 1 is run twice: T1a literal (v0 = 0: the ball must stay put) and T1b (v0 = 0.107 m/s at 270°: the orbit "
-    "at 2Ω/7).",
-    "Test 2 uses the caption: 0.17° tilt, downhill toward 135°. Test 5 is run at the caption's 0.10° and at 0.010°.",
-    "Rolling friction opposes the angular velocity relative to the contact partner including twist; the dish "
-    "test without twist resistance locks at a wrong height (regression case dish_twist_regression).",
-]
-
-
-def read_series(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        return [], np.zeros((0, 0))
-    header = rows[0]
-    data = []
-    for row in rows[1:]:
-        try:
-            data.append([float(v) if v not in ("", "nan") else math.nan for v in row])
-        except ValueError:
-            continue
-    array = np.array(data, dtype=float) if data else np.zeros((0, len(header)))
-    return header, array
-
-
-def column(header, data, name):
-    return data[:, header.index(name)] if name in header else None
-
-
-def fmt(value):
-    if value is None:
-        return "–"
-    if isinstance(value, bool):
-        return str(value)
-    if isinstance(value, (int, float)):
-        if not math.isfinite(value):
-            return "–"
-        if value == 0:
-            return "0"
-        return f"{value:.6g}"
-    return html.escape(str(value))
-
-
-def save(fig, out_dir, name):
-    path = os.path.join(out_dir, "figures", name + ".png")
-    fig.savefig(path, dpi=110, bbox_inches="tight")
-    plt.close(fig)
-    return "figures/" + name + ".png"
-
 
 def compass(ax):
     """N/E/S/W marks around the paper's 0.4 m x 0.4 m frame."""
@@ -371,184 +309,6 @@ def generic_figure(out_dir, case, name, header, data):
     return save(fig, out_dir, f"{case}_{name}")
 
 
-# Families of cases: (key, title, what it checks, name prefixes). A case belongs to the first family
-# whose prefix it starts with; the last family takes the rest.
-FAMILIES = [
-    ("paper", "The paper's 3D tests (turntable, dish, many balls)",
-     "Xiang, Munjiza, Latham & Guises: the flat turntable Tests 1-5 (Figs. 3-9) against the rigid-rolling "
-     "equations, the rotating concave dish (Figs. 10-12) and the Liquid Reflections scene.",
-     ("turntable_", "dish_", "liquid_")),
-    ("fdem", "2D FEM/DEM (the paper's sliding block and element checks)",
-     "The paper's Fig. 1 sliding block, L = v²/(2μg), and the constant-strain-triangle checks.",
-     ("sliding_block", "fdem_")),
-    ("chung_ooi", "Chung & Ooi (2011) impact benchmarks 1-8",
-     "Hertz-Mindlin impacts of Chung & Ooi, each for both of its materials: tests 1-3 against the Hertz closed "
-     "forms, tests 4-8 as sweeps drawn over the rigid-body lines. Tangential quantities use contact-point "
-     "velocities unless named v_t (centre).",
-     ("chung_ooi_",)),
-    ("asmar", "Asmar-style tests",
-     "Analytic single-situation tests in the spirit of Asmar et al. (2002): bouncing ball, vibrating plate, "
-     "Newton's cradle, energy over many elastic collisions.",
-     ("asmar_",)),
-    ("rolling", "Rolling resistance (Ai, Chen, Rotter & Ooi 2011)",
-     "Type B (viscous) and the absolute-frame type A against closed forms, and the turntable case that separates "
-     "the relative and absolute frames. Types A and C: rolling_resistance_stop (single-particle family).",
-     ("rolling_resistance_models", "rolling_turntable")),
-    ("convergence", "Convergence orders in dt",
-     "Collision, friction and rolling errors at dt, dt/2, dt/4 (more levels where the error scatters); the observed "
-     "order against the scheme's.",
-     ("convergence_",)),
-    ("single", "Single-particle and contact-law checks",
-     "Free fall, restitution, sliding-to-rolling, inclines, rolling types A and C, moving walls, two-sphere "
-     "collisions.",
-     ()),
-]
-
-
-def family_of(case):
-    for key, _, _, prefixes in FAMILIES[:-1]:
-        if any(case.startswith(p) for p in prefixes):
-            return key
-    return FAMILIES[-1][0]
-
-
-def material_of(name):
-    for suffix in ("_sweep", "_force", "_restitution", "_energy", "_orbit"):
-        if name.endswith(suffix):
-            return name[: -len(suffix)]
-    return name
-
-
-# Chung & Ooi sweeps: per case, panels (x column, y column, rigid column or None, x label, y label, log x).
-CHUNG_OOI_PANELS = {
-    "chung_ooi_t4": [("theta_deg", "e_t", "e_t_rigid", "incidence angle θ (deg)", "tangential COR e_t = v_t'/v_t", False),
-                     ("theta_deg", "omega", "omega_rigid", "incidence angle θ (deg)", "rebound angular velocity ω' (rad/s)", False),
-                     ("theta_deg", "rebound_deg", "rebound_deg_rigid", "incidence angle θ (deg)",
-                      "rebound angle of the contact point (deg)", False)],
-    "chung_ooi_t5": [("psi1", "psi2", "psi2_rigid", "ψ1 = V_t/(μ V_n)", "ψ2 = V_t'/(μ V_n')", False),
-                     ("psi1", "spin", "spin_rigid", "ψ1 = V_t/(μ V_n)", "−R ω'/(μ V_n)", False)],
-    "chung_ooi_t6": [("X", "beta", "beta_rigid", "X = 3.5 μ (1+e) V_n / V_t", "β = −V_t'/V_t", True),
-                     ("tan_incidence", "tan_recoil", "tan_recoil_rigid", "tan(incidence) = V_t/V_n",
-                      "tan(recoil) = V_t'/V_n'", False)],
-    "chung_ooi_t7": [("omega", "omega_out_1", "omega", "initial spin ω (rad/s)", "ω' (rad/s)", True),
-                     ("omega", "vt_out_1", None, "initial spin ω (rad/s)", "v_t' (m/s)", True)],
-}
-CHUNG_OOI_PANELS["chung_ooi_t8"] = CHUNG_OOI_PANELS["chung_ooi_t6"]
-MARKERS = ["o", "s", "^", "D"]
-
-
-def chung_ooi_sweep_figure(out_dir, case, named):
-    panels = CHUNG_OOI_PANELS[case]
-    fig, axes = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.4))
-    axes = np.atleast_1d(axes)
-    for ax, (xc, yc, rc, xl, yl, logx) in zip(axes, panels):
-        for k, (name, (header, data)) in enumerate(sorted(named.items())):
-            x, y = column(header, data, xc), column(header, data, yc)
-            if x is None or y is None:
-                continue
-            order = np.argsort(x)
-            colour = plt.cm.tab10(k)
-            ax.plot(x[order], y[order], MARKERS[k % 4], color=colour, mfc="none", ms=6, label=f"DEM, {material_of(name)}")
-            rigid = column(header, data, rc) if rc else None
-            if rigid is not None and k == 0:
-                ax.plot(x[order], rigid[order], "-", color="k", lw=1.3, label="rigid body")
-        if logx:
-            ax.set_xscale("log")
-        ax.set_xlabel(xl)
-        ax.set_ylabel(yl)
-        ax.grid(True, lw=0.3)
-        ax.legend(fontsize=7.5)
-    fig.suptitle(f"{case.replace('chung_ooi_t', 'Chung & Ooi test ')}: DEM (markers) over the rigid-body line",
-                 fontsize=10)
-    fig.tight_layout()
-    return save(fig, out_dir, f"{case}_sweep")
-
-
-def chung_ooi_force_figure(out_dir, case, named):
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.4))
-    for k, (name, (header, data)) in enumerate(sorted(named.items())):
-        t, d, f, fh = (column(header, data, c) for c in ("t", "delta", "F", "F_hertz"))
-        if d is None or f is None:
-            continue
-        colour = plt.cm.tab10(k)
-        a1.plot(d * 1e6, f, color=colour, lw=1.0, label=f"DEM, {material_of(name)}")
-        if fh is not None:
-            a1.plot(d * 1e6, fh, "--", color="k", lw=0.8, label="Hertz (4/3) E*√R* δ^1.5" if k == 0 else None)
-        a2.plot((t - t[0]) * 1e6, f, color=colour, lw=1.0, label=material_of(name))
-    a1.set_xlabel("overlap δ (µm)")
-    a1.set_ylabel("normal force F (N)")
-    a2.set_xlabel("time since first touch (µs)")
-    a2.set_ylabel("normal force F (N)")
-    for ax in (a1, a2):
-        ax.grid(True, lw=0.3)
-        ax.legend(fontsize=7.5)
-    fig.suptitle(f"{case.replace('chung_ooi_t', 'Chung & Ooi test ')}: force-overlap and force-time", fontsize=10)
-    fig.tight_layout()
-    return save(fig, out_dir, f"{case}_force")
-
-
-def chung_ooi_restitution_figure(out_dir, case, named):
-    fig, ax = plt.subplots(figsize=(5.6, 5))
-    ax.plot([0, 1], [0, 1], "-", color="k", lw=1.2, label="e_out = e_in")
-    for k, (name, (header, data)) in enumerate(sorted(named.items())):
-        ax.plot(column(header, data, "e_in"), column(header, data, "e_out"), MARKERS[k % 4], mfc="none",
-                color=plt.cm.tab10(k), ms=7, label=f"DEM, {material_of(name)}")
-    ax.set_xlabel("input restitution e_in")
-    ax.set_ylabel("measured restitution e_out")
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title("Chung & Ooi test 3: e_out against e_in", fontsize=10)
-    return save(fig, out_dir, f"{case}_restitution")
-
-
-def convergence_figure(out_dir, case, header, data, notes):
-    names = {}
-    for note in notes:
-        m = re.match(r"study (\d+): (.*)", note)
-        if m:
-            names[int(m.group(1))] = m.group(2)
-    fig, ax = plt.subplots(figsize=(8.5, 6))
-    study = column(header, data, "study")
-    for k, index in enumerate(sorted(set(study.astype(int)))):
-        rows = study == index
-        dt, err = column(header, data, "dt_over_tc")[rows], column(header, data, "error")[rows]
-        ref = column(header, data, "error_expected_slope")
-        colour = plt.cm.tab10(k)
-        ax.loglog(dt, err, "o-", color=colour, lw=1.2, label=names.get(index, f"study {index}"))
-        if ref is not None:
-            ax.loglog(dt, ref[rows], ":", color=colour, lw=1)
-    ax.set_xlabel("dt / reference time (contact time; τ for rolling)")
-    ax.set_ylabel("|error|")
-    ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=7, loc="lower right")
-    ax.set_title("Observed convergence (solid) against the scheme's expected order (dotted)", fontsize=10)
-    return save(fig, out_dir, f"{case}_orders")
-
-
-def rolling_frames_figure(out_dir, case, named):
-    fig, ax = plt.subplots(figsize=(8, 4.8))
-    drawn = False
-    for k, name in enumerate(("relative_orbit", "absolute_orbit")):
-        if name not in named:
-            continue
-        header, data = named[name]
-        t, rho, rho_t = column(header, data, "t"), column(header, data, "rho"), column(header, data, "rho_theory")
-        colour = plt.cm.tab10(k)
-        ax.plot(t, rho * 1e3, color=colour, lw=1.1, label=f"DEM, {name.replace('_orbit', '')} frame")
-        if k == 0:
-            ax.plot(t, rho_t * 1e3, "--", color="k", lw=1.5, label="rigid rolling T2 (RK4), relative frame")
-        drawn = True
-    if not drawn:
-        plt.close(fig)
-        return None
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("orbit radius ρ = |v|/ω_o (mm)")
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title("Turntable, ball set down co-rotating near the axis: orbit growth by rolling friction", fontsize=10)
-    return save(fig, out_dir, f"{case}_radius")
-
-
 def main():
     if len(sys.argv) != 3:
         print(__doc__)
@@ -673,120 +433,6 @@ def main():
     print(f"report: {os.path.join(out_dir, 'index.html')} ({len(figures)} figures)")
     return 0
 
-
-def ratio_of(q):
-    """Error over tolerance of a quantity (how much of its tolerance it uses)."""
-    tolerance, error = q.get("tolerance", 0), q.get("error")
-    if error is None or not isinstance(error, (int, float)) or not math.isfinite(error):
-        return math.inf
-    return abs(error) / tolerance if tolerance else (0.0 if error == 0 else math.inf)
-
-
-def case_table(w, cases):
-    w("<table><tr><th>case</th><th>quantity</th><th>theory</th><th>measured</th><th>error</th>"
-      "<th>tolerance</th><th>result</th><th>why this tolerance</th></tr>")
-    for c in cases:
-        quantities = c.get("quantities", [])
-        rows = max(len(quantities), 1)
-        head = (f"<td rowspan='{rows}' id='case-{html.escape(c['name'])}'><b>{html.escape(c['name'])}</b><br>"
-                f"<span class='why'>{html.escape(c.get('summary', ''))}<br>{html.escape(c.get('reference', ''))}<br>"
-                f"{c.get('seconds', 0):.2f} s</span></td>")
-        if not quantities:
-            msg = html.escape(c.get("error", "the case measured nothing"))
-            w(f"<tr>{head}<td colspan='5'>{msg}</td><td class='fail'>FAIL</td><td></td></tr>")
-            continue
-        for k, q in enumerate(quantities):
-            unit = f" [{html.escape(q.get('unit', ''))}]" if q.get("unit") else ""
-            kind = "rel." if q.get("relative") else "abs."
-            result = "<td class='pass'>PASS</td>" if q.get("passed") else "<td class='fail'>FAIL</td>"
-            w("<tr>" + (head if k == 0 else "") + f"<td>{html.escape(q['name'])}{unit}</td>"
-              f"<td class='num'>{fmt(q.get('expected'))}</td><td class='num'>{fmt(q.get('measured'))}</td>"
-              f"<td class='num'>{fmt(q.get('error'))}</td><td class='num'>{fmt(q.get('tolerance'))} {kind}</td>"
-              f"{result}<td class='why'>{html.escape(q.get('why', ''))}</td></tr>")
-    w("</table>")
-
-
-def write_html(out_dir, cases, figures):
-    passed = sum(1 for c in cases if c.get("passed"))
-    total_seconds = sum(c.get("seconds", 0) for c in cases)
-    by_family = {key: [c for c in cases if family_of(c["name"]) == key] for key, _, _, _ in FAMILIES}
-    out = []
-    w = out.append
-    w("<!DOCTYPE html><html><head><meta charset='utf-8'><title>veridem verification report</title><style>"
-      "body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}"
-      "table{border-collapse:collapse;font-size:12px;width:100%}td,th{border:1px solid #ccc;padding:3px 5px;"
-      "vertical-align:top}th{background:#eee}.pass{color:#070;font-weight:bold}.fail{color:#b00;font-weight:bold}"
-      "td.num{text-align:right;font-family:monospace;white-space:nowrap}.why{color:#555;font-size:11px}"
-      "figure{display:inline-block;margin:6px;vertical-align:top}figure img{max-width:620px;border:1px solid #ddd}"
-      "figure img.wide{max-width:1240px}"
-      "figcaption{font-size:12px;color:#444}.notes{font-size:12px;color:#333}"
-      "table.summary{font-size:14px;width:auto}table.summary td{padding:5px 10px}"
-      "details{margin:0.8em 0}summary{cursor:pointer;font-weight:bold;color:#245}"
-      "h2{border-bottom:2px solid #ccd;padding-bottom:3px;margin-top:2em}.top{font-size:12px}</style></head><body>")
-    w("<h1>veridem verification report</h1>")
-    w("<p>Cases compare DEM runs with analytical solutions, after Xiang, Munjiza, Latham &amp; Guises, "
-      "<i>On the validation of DEM and FEM/DEM models in 2D and 3D</i>, and the benchmark families of "
-      f"BENCHMARKS.md. <b>{passed} of {len(cases)} cases passed</b>; the cases took {total_seconds:.1f} s in total.</p>")
-    w("<h2 id='summary'>Summary by family</h2>")
-    w("<table class='summary'><tr><th>family</th><th>cases</th><th>passed</th><th>worst error / tolerance</th>"
-      "<th>at</th></tr>")
-    for key, title, _, _ in FAMILIES:
-        members = by_family[key]
-        if not members:
-            continue
-        ok = sum(1 for c in members if c.get("passed"))
-        worst, where = 0.0, ""
-        for c in members:
-            if not c.get("quantities"):
-                worst, where = math.inf, c["name"] + " (no result)"
-            for q in c.get("quantities", []):
-                r = ratio_of(q)
-                if r > worst:
-                    worst, where = r, f"{c['name']}: {q['name']}"
-        cls = "pass" if ok == len(members) else "fail"
-        w(f"<tr><td><a href='#{key}'>{html.escape(title)}</a></td><td class='num'>{len(members)}</td>"
-          f"<td class='num {cls}'>{ok}</td><td class='num'>{fmt(worst)}</td><td class='why'>{html.escape(where)}</td></tr>")
-    w("</table><p class='why'>error / tolerance: the largest share of its tolerance any check of the family uses "
-      "(above 1 fails). Failing cases are listed in their family's section.</p>")
-    w("<details><summary>Conventions and decisions</summary>")
-    w("<h3>Conventions</h3><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in CONVENTIONS) + "</ul>")
-    w("<h3>Decisions (BENCHMARKS.md)</h3><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in DECISIONS) + "</ul>")
-    w("</details>")
-    for key, title, blurb, _ in FAMILIES:
-        members = by_family[key]
-        if not members:
-            continue
-        ok = sum(1 for c in members if c.get("passed"))
-        w(f"<h2 id='{key}'>{html.escape(title)}</h2>")
-        w(f"<p>{html.escape(blurb)} <b>{ok} of {len(members)} passed.</b> <a class='top' href='#summary'>"
-          "(back to the summary)</a></p>")
-        failed = [c["name"] for c in members if not c.get("passed")]
-        if failed:
-            w("<p class='fail'>Failing: " + ", ".join(
-                f"<a href='#case-{html.escape(n)}'>{html.escape(n)}</a>" for n in failed) + "</p>")
-        subsection = None
-        for fam, sub, fig_title, path in figures:
-            if fam != key:
-                continue
-            if sub and sub != subsection:
-                w(f"<h3>{html.escape(sub)}</h3>")
-                subsection = sub
-            wide = " class='wide'" if path.endswith(("_sweep.png", "_force.png", "_orders.png")) else ""
-            w(f"<figure><a href='{path}'><img{wide} src='{path}' alt='{html.escape(fig_title)}'></a>"
-              f"<figcaption>{html.escape(fig_title)}</figcaption></figure>")
-        quantities = sum(len(c.get("quantities", [])) for c in members)
-        w(f"<details{' open' if failed else ''}><summary>Detailed table: {len(members)} cases, {quantities} "
-          "checks</summary>")
-        case_table(w, members)
-        noted = [c for c in members if c.get("notes") or c.get("error")]
-        for c in noted:
-            notes = ([f"ERROR: {c['error']}"] if c.get("error") else []) + c.get("notes", [])
-            w(f"<p class='notes'><b>{html.escape(c['name'])}</b></p><ul class='notes'>" +
-              "".join(f"<li>{html.escape(n)}</li>" for n in notes) + "</ul>")
-        w("</details>")
-    w("</body></html>")
-    with open(os.path.join(out_dir, "index.html"), "w") as f:
-        f.write("\n".join(out))
 
 
 if __name__ == "__main__":
