@@ -4,9 +4,11 @@
 // flight, and each collision changes it only through the contact switching on and off between
 // steps, an error of order (omega_n dt)^2 whose sign depends on where first touch falls. Checks:
 //  * |E_n - E_0| / E_0 below 1e-4 after every one of the 100 collisions (BENCHMARKS 5.5);
-//  * no drift: the changes per collision, d_n = (E_n - E_(n-1))/E_0, are a random walk of steps
-//    ~2e-5 with zero mean (the integrator is time-reversible); a systematic gain or loss would give
-//    them a mean. Checked as |mean(d)| / (std(d) / sqrt(n)) below 3 (three standard errors).
+//  * no drift: the flight between the walls has a fixed length, so first touch moves through the
+//    step by a fixed fraction from one collision to the next and the energy error is a bounded,
+//    quasi-periodic function of that phase (time-reversible scheme: zero mean), not a growing
+//    sum. A systematic gain or loss per collision would give the changes d_n = (E_n - E_(n-1))/E_0
+//    a mean; checked as |mean(d)| / (std(d) / sqrt(n)) below 3 (three standard errors).
 #include "chung_ooi.h"
 #include "support.h"
 
@@ -76,7 +78,7 @@ void runLaw(bool hertz, const CaseContext& context, CaseResult& r)
     }
     r.quantities.push_back(absoluteQuantity("drift: |mean change per collision| / standard error" + tag, "",
                                             0, std::fabs(mean) / std::sqrt(variance / n), 3.0,
-                                            "three standard errors of a zero-mean random walk"));
+                                            "three standard errors of the per-collision change"));
     char note[160];
     std::snprintf(note, sizeof note, "%s: mean change per collision %.3g, rms step %.3g (of E_0)",
                   hertz ? "Hertz" : "linear", mean, std::sqrt(variance));
