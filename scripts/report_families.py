@@ -160,7 +160,7 @@ def convergence_figure(out_dir, case, header, data, notes):
     ax.set_xlabel("dt / reference time (contact time; τ for rolling)")
     ax.set_ylabel("|error|")
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=7, loc="upper left")
     ax.set_title("Observed convergence (solid) against the scheme's expected order (dotted)", fontsize=10)
     return save(fig, out_dir, f"{case}_orders")
 

@@ -107,7 +107,8 @@ def write_html(out_dir, cases, figures):
         w(f"<tr><td><a href='#{key}'>{html.escape(title)}</a></td><td class='num'>{len(members)}</td>"
           f"<td class='num {cls}'>{ok}</td><td class='num'>{fmt(worst)}</td><td class='why'>{html.escape(where)}</td></tr>")
     w("</table><p class='why'>error / tolerance: the largest share of its tolerance any check of the family uses "
-      "(above 1 fails). Failing cases are listed in their family's section.</p>")
+      "(above 1 fails). One-sided checks (a sign, or a miss that must exceed a bound) are written as windows "
+      "and use much of their tolerance by construction. Failing cases are listed in their family's section.</p>")
     w("<details><summary>Conventions and decisions</summary>")
     w("<h3>Conventions</h3><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in CONVENTIONS) + "</ul>")
     w("<h3>Decisions (BENCHMARKS.md)</h3><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in DECISIONS) + "</ul>")
