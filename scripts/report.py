@@ -1,5 +1,9 @@
 #!/usr/bin/python3
-"""Draws the verification report: DIR/index.html with the summary table and PNG figures.
+"""Draws the verification report: DIR/index.html and PNG figures. The page opens with a summary per
+family of cases (cases, passed, worst error over tolerance) linking to one section per family with
+its figures and its detailed table folded (<details>). Helpers: report_util.py (series, saving),
+report_families.py (FAMILIES, which sorts the cases, and the benchmark families' figures),
+report_html.py (the page).
 
 Usage: report.py DIR RESULTS_JSON
 
@@ -16,12 +20,13 @@ editing this script):
   dish_*/trajectory.csv        Figs. 10-11 (x-y) and h(t); dish_*/dish_final.csv -> Fig. 12
   */trajectories.csv with x_0, y_0, ... columns   many-ball paths (Liquid Reflections)
   sliding_block*.csv with a column v and L_* columns   Fig. 1, stop distance vs initial velocity
+  chung_ooi_t*/<material>_sweep|_force|_restitution.csv  Chung & Ooi's figures over the rigid lines
+  convergence_*/orders.csv     log-log error against dt, with the expected slope
+  rolling_turntable*/*_orbit.csv   orbit radius against time, relative and absolute frames
 
 Only the Python standard library, numpy and matplotlib (Debian python3-matplotlib, Agg backend).
 """
 
-import csv
-import html
 import json
 import math
 import os
@@ -33,6 +38,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from report_families import (CHUNG_OOI_PANELS, chung_ooi_force_figure, chung_ooi_restitution_figure,  # noqa: E402
+                             chung_ooi_sweep_figure, convergence_figure, family_of, rolling_frames_figure)
+from report_html import write_html  # noqa: E402
+from report_util import column, read_series, save  # noqa: E402
 
 GRAVITY = 9.81
 DISH_RADIUS = 20.0
@@ -64,73 +74,6 @@ TURNTABLE_FIGURES = {
 # Axis labels for series columns a generic plot recognises (column name or prefix before "_").
 UNITS = {"t": "t (s)", "h": "height h (m)", "x": "x (m)", "y": "y (m)", "z": "z (m)", "v": "v (m/s)",
          "omega": "Ω (rad/s)", "rho": "ρ (m)", "energy": "energy (J)"}
-
-CONVENTIONS = [
-    "SI units throughout; angles in the table plane from east (+x) counter-clockwise; tables and dishes "
-    "turn counter-clockwise seen from above.",
-    "Contact radius: a sphere-wall contact uses the undeformed radius as the lever arm and for the contact-point "
-    "velocity; a sphere-sphere contact splits the centre distance in proportion to the radii.",
-    "Rolling friction (type A, the paper's eq. 3): M = −μr F_n ω̂_rel, where ω_rel is the angular velocity "
-    "relative to the contact partner (the wall's own angular velocity for a turning wall), twist about the "
-    "normal included; μr is a length in m (μr' = μr/a is the dimensionless form).",
-    "Normal dashpot not clipped: the normal force may be slightly attractive just before separation, so e equals "
-    "the value set.",
-    "The wall's surface velocity is taken at the half-step contact point, consistent with the half-step "
-    "particle velocities of velocity Verlet.",
-]
-
-DECISIONS = [
-    "Flat-turntable stiffness k = 1.0e5 N/m (the paper's table is truncated), kt = 2/7 k.",
-    "Initial velocities in the captions are lab-frame; the no-slip start sets the spin so that the contact point "
-    "moves with the table, with zero spin about the table normal.",
-    "Test 1 is run twice: T1a literal (v0 = 0: the ball must stay put) and T1b (v0 = 0.107 m/s at 270°: the orbit "
-    "at 2Ω/7).",
-    "Test 2 uses the caption: 0.17° tilt, downhill toward 135°. Test 5 is run at the caption's 0.10° and at 0.010°.",
-    "Rolling friction opposes the angular velocity relative to the contact partner including twist; the dish "
-    "test without twist resistance locks at a wrong height (regression case dish_twist_regression).",
-]
-
-
-def read_series(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        return [], np.zeros((0, 0))
-    header = rows[0]
-    data = []
-    for row in rows[1:]:
-        try:
-            data.append([float(v) if v not in ("", "nan") else math.nan for v in row])
-        except ValueError:
-            continue
-    array = np.array(data, dtype=float) if data else np.zeros((0, len(header)))
-    return header, array
-
-
-def column(header, data, name):
-    return data[:, header.index(name)] if name in header else None
-
-
-def fmt(value):
-    if value is None:
-        return "–"
-    if isinstance(value, bool):
-        return str(value)
-    if isinstance(value, (int, float)):
-        if not math.isfinite(value):
-            return "–"
-        if value == 0:
-            return "0"
-        return f"{value:.6g}"
-    return html.escape(str(value))
-
-
-def save(fig, out_dir, name):
-    path = os.path.join(out_dir, "figures", name + ".png")
-    fig.savefig(path, dpi=110, bbox_inches="tight")
-    plt.close(fig)
-    return "figures/" + name + ".png"
-
 
 def compass(ax):
     """N/E/S/W marks around the paper's 0.4 m x 0.4 m frame."""
@@ -390,7 +333,8 @@ def main():
                 except OSError:
                     pass
 
-    figures = []  # (section, title, path)
+    figures = []  # (family, subsection, title, path)
+    notes_of = {c["name"]: c.get("notes", []) for c in cases}
     used = set()
     # Turntable, Figs. 3-9.
     turntable = {c: s["trajectory"] for c, s in series.items() if c.startswith("turntable_") and "trajectory" in s}
@@ -399,11 +343,11 @@ def main():
         if case in turntable:
             path = turntable_figure(out_dir, case, *turntable[case])
             if path:
-                figures.append(("Flat turntable (paper Figs. 3-9)", case, path))
+                figures.append(("paper", "Flat turntable (paper Figs. 3-9)", case, path))
                 used.add((case, "trajectory"))
     path = turntable_deviation_figure(out_dir, turntable)
     if path:
-        figures.append(("Flat turntable (paper Figs. 3-9)", "whole-path comparison", path))
+        figures.append(("paper", "Flat turntable (paper Figs. 3-9)", "whole-path comparison", path))
 
     # Dish, Figs. 10-12.
     dish = {c: s["trajectory"] for c, s in series.items() if c.startswith("dish_") and "trajectory" in s}
@@ -413,11 +357,11 @@ def main():
         if case in dish:
             path = dish_xy_figure(out_dir, case, *dish[case], title)
             if path:
-                figures.append(("Concave dish (paper Figs. 10-12)", case, path))
+                figures.append(("paper", "Concave dish (paper Figs. 10-12)", case, path))
     for case in dish:
         used.add((case, "trajectory"))
     if dish:
-        figures.append(("Concave dish (paper Figs. 10-12)", "h(t)", dish_height_figure(out_dir, dish)))
+        figures.append(("paper", "Concave dish (paper Figs. 10-12)", "h(t)", dish_height_figure(out_dir, dish)))
     finals = []
     for case, s in series.items():
         if "dish_final" in s:
@@ -432,7 +376,7 @@ def main():
         regression = (0.9, float(np.mean(h[t > t[-1] - 20])))
     path = fig12(out_dir, finals, regression)
     if path:
-        figures.append(("Concave dish (paper Figs. 10-12)", "Fig. 12", path))
+        figures.append(("paper", "Concave dish (paper Figs. 10-12)", "Fig. 12", path))
 
     # Fig. 1: all sliding_block* series of a case in one figure.
     for case in sorted(series):
@@ -440,8 +384,38 @@ def main():
         if blocks:
             path = sliding_block_figure(out_dir, case, blocks)
             if path:
-                figures.append(("Sliding block (paper Fig. 1)", case, path))
+                figures.append((family_of(case), "Sliding block (paper Fig. 1)", case, path))
                 used.update((case, n) for n in blocks)
+
+    # Chung & Ooi, drawn as the paper draws them.
+    for case in sorted(series):
+        if not case.startswith("chung_ooi_"):
+            continue
+        named = series[case]
+        if case in CHUNG_OOI_PANELS:
+            sweeps = {n: v for n, v in named.items() if n.endswith("_sweep")}
+            path = chung_ooi_sweep_figure(out_dir, case, sweeps) if sweeps else None
+        else:
+            sweeps = {n: v for n, v in named.items() if n.endswith("_force")}
+            path = chung_ooi_force_figure(out_dir, case, sweeps) if sweeps else None
+            if not sweeps:
+                sweeps = {n: v for n, v in named.items() if n.endswith("_restitution")}
+                path = chung_ooi_restitution_figure(out_dir, case, sweeps) if sweeps else None
+        if path:
+            figures.append(("chung_ooi", "", case, path))
+            used.update((case, n) for n in sweeps)
+    # Convergence orders (log-log) and the turntable frames.
+    for case in sorted(series):
+        if "orders" in series[case] and case.startswith("convergence_"):
+            path = convergence_figure(out_dir, case, *series[case]["orders"], notes_of.get(case, []))
+            if path:
+                figures.append(("convergence", "", case, path))
+                used.add((case, "orders"))
+        if case.startswith("rolling_turntable"):
+            path = rolling_frames_figure(out_dir, case, series[case])
+            if path:
+                figures.append(("rolling", "", case, path))
+                used.update((case, n) for n in series[case])
 
     # Everything else: many-ball paths, generic plots.
     for case in sorted(series):
@@ -451,72 +425,14 @@ def main():
             if any(re.fullmatch(r"x_\d+", c) for c in header):
                 path, section = many_ball_figure(out_dir, case, name, header, data), "Many balls"
             else:
-                path, section = generic_figure(out_dir, case, name, header, data), "Other series"
+                path, section = generic_figure(out_dir, case, name, header, data), ""
             if path:
-                figures.append((section, f"{case}: {name}", path))
+                figures.append((family_of(case), section, f"{case}: {name}", path))
 
     write_html(out_dir, cases, figures)
     print(f"report: {os.path.join(out_dir, 'index.html')} ({len(figures)} figures)")
     return 0
 
-
-def write_html(out_dir, cases, figures):
-    passed = sum(1 for c in cases if c.get("passed"))
-    total_seconds = sum(c.get("seconds", 0) for c in cases)
-    out = []
-    w = out.append
-    w("<!DOCTYPE html><html><head><meta charset='utf-8'><title>veridem verification report</title><style>"
-      "body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}"
-      "table{border-collapse:collapse;font-size:12px;width:100%}td,th{border:1px solid #ccc;padding:3px 5px;"
-      "vertical-align:top}th{background:#eee}.pass{color:#070;font-weight:bold}.fail{color:#b00;font-weight:bold}"
-      "td.num{text-align:right;font-family:monospace;white-space:nowrap}.why{color:#555;font-size:11px}"
-      "figure{display:inline-block;margin:6px;vertical-align:top}figure img{max-width:620px;border:1px solid #ddd}"
-      "figcaption{font-size:12px;color:#444}.notes{font-size:12px;color:#333}</style></head><body>")
-    w("<h1>veridem verification report</h1>")
-    w("<p>Cases compare DEM runs with analytical solutions, after Xiang, Munjiza, Latham &amp; Guises, "
-      "<i>On the validation of DEM and FEM/DEM models in 2D and 3D</i>, and the specifications of BENCHMARKS.md. "
-      f"<b>{passed} of {len(cases)} cases passed</b>; the cases took {total_seconds:.1f} s in total.</p>")
-    w("<h2>Conventions</h2><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in CONVENTIONS) + "</ul>")
-    w("<h2>Decisions (BENCHMARKS.md)</h2><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in DECISIONS) + "</ul>")
-    w("<h2>Summary</h2><table><tr><th>case</th><th>quantity</th><th>theory</th><th>measured</th><th>error</th>"
-      "<th>tolerance</th><th>result</th><th>why this tolerance</th></tr>")
-    for c in cases:
-        quantities = c.get("quantities", [])
-        rows = max(len(quantities), 1)
-        head = (f"<td rowspan='{rows}'><b>{html.escape(c['name'])}</b><br><span class='why'>"
-                f"{html.escape(c.get('summary', ''))}<br>{html.escape(c.get('reference', ''))}<br>"
-                f"{c.get('seconds', 0):.2f} s</span></td>")
-        if not quantities:
-            msg = html.escape(c.get("error", "the case measured nothing"))
-            w(f"<tr>{head}<td colspan='5'>{msg}</td><td class='fail'>FAIL</td><td></td></tr>")
-            continue
-        for k, q in enumerate(quantities):
-            unit = f" [{html.escape(q.get('unit', ''))}]" if q.get("unit") else ""
-            kind = "rel." if q.get("relative") else "abs."
-            result = "<td class='pass'>PASS</td>" if q.get("passed") else "<td class='fail'>FAIL</td>"
-            w("<tr>" + (head if k == 0 else "") + f"<td>{html.escape(q['name'])}{unit}</td>"
-              f"<td class='num'>{fmt(q.get('expected'))}</td><td class='num'>{fmt(q.get('measured'))}</td>"
-              f"<td class='num'>{fmt(q.get('error'))}</td><td class='num'>{fmt(q.get('tolerance'))} {kind}</td>"
-              f"{result}<td class='why'>{html.escape(q.get('why', ''))}</td></tr>")
-    w("</table>")
-    w("<h2>Notes</h2>")
-    for c in cases:
-        notes = c.get("notes", [])
-        if c.get("error"):
-            notes = [f"ERROR: {c['error']}"] + notes
-        if notes:
-            w(f"<p class='notes'><b>{html.escape(c['name'])}</b></p><ul class='notes'>" +
-              "".join(f"<li>{html.escape(n)}</li>" for n in notes) + "</ul>")
-    section = None
-    for sec, title, path in figures:
-        if sec != section:
-            w(f"<h2>{html.escape(sec)}</h2>")
-            section = sec
-        w(f"<figure><a href='{path}'><img src='{path}' alt='{html.escape(title)}'></a>"
-          f"<figcaption>{html.escape(title)}</figcaption></figure>")
-    w("</body></html>")
-    with open(os.path.join(out_dir, "index.html"), "w") as f:
-        f.write("\n".join(out))
 
 
 if __name__ == "__main__":

@@ -37,6 +37,10 @@ template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairPara
             return f(LawModel<N, RollingModel::ConstantTorque>{});
         case RollingModel::Epsd:
             return f(LawModel<N, RollingModel::Epsd>{});
+        case RollingModel::Viscous:
+            return f(LawModel<N, RollingModel::Viscous>{});
+        case RollingModel::ConstantTorqueAbsolute:
+            return f(LawModel<N, RollingModel::ConstantTorqueAbsolute>{});
         default:
             return f(LawModel<N, RollingModel::None>{});
         }
@@ -46,30 +50,36 @@ template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairPara
     return rolling.template operator()<NormalModel::Linear>();
 }
 
-/// The number of model combinations (LawModel) and each one's index: normal * 3 + rolling.
-inline constexpr unsigned kLawModels = 6;
+/// The number of model combinations (LawModel) and each one's index: normal * 5 + rolling.
+inline constexpr unsigned kRollingModelCount = 5;
+inline constexpr unsigned kLawModels = 2 * kRollingModelCount;
 inline unsigned lawModelIndex(const PairParams& p)
 {
-    return static_cast<unsigned>(p.normalModel) * 3 + static_cast<unsigned>(p.rollingModel);
+    return static_cast<unsigned>(p.normalModel) * kRollingModelCount + static_cast<unsigned>(p.rollingModel);
 }
+/// The lawModelIndex bits of the models with rolling resistance.
+inline constexpr unsigned kRollingModels = ((1u << kLawModels) - 1) & ~(1u | (1u << kRollingModelCount));
 
 /// Calls f(LawModel<...>{}, index) for every model whose bit `index` is set in `mask`.
 template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
 {
     using N = NormalModel;
     using R = RollingModel;
-    if (mask & 1u)
-        f(LawModel<N::Linear, R::None>{}, 0u);
-    if (mask & 2u)
-        f(LawModel<N::Linear, R::ConstantTorque>{}, 1u);
-    if (mask & 4u)
-        f(LawModel<N::Linear, R::Epsd>{}, 2u);
-    if (mask & 8u)
-        f(LawModel<N::Hertz, R::None>{}, 3u);
-    if (mask & 16u)
-        f(LawModel<N::Hertz, R::ConstantTorque>{}, 4u);
-    if (mask & 32u)
-        f(LawModel<N::Hertz, R::Epsd>{}, 5u);
+    const auto forNormal = [&]<N kNormal>(unsigned base) VERIDEM_INLINE_LAMBDA
+    {
+        if (mask & (1u << base))
+            f(LawModel<kNormal, R::None>{}, base);
+        if (mask & (2u << base))
+            f(LawModel<kNormal, R::ConstantTorque>{}, base + 1);
+        if (mask & (4u << base))
+            f(LawModel<kNormal, R::Epsd>{}, base + 2);
+        if (mask & (8u << base))
+            f(LawModel<kNormal, R::Viscous>{}, base + 3);
+        if (mask & (16u << base))
+            f(LawModel<kNormal, R::ConstantTorqueAbsolute>{}, base + 4);
+    };
+    forNormal.template operator()<N::Linear>(0);
+    forNormal.template operator()<N::Hertz>(kRollingModelCount);
 }
 
 /// What the law reads beyond the linear normal and tangential model.
@@ -80,7 +90,9 @@ struct ExtraInputs
 inline ExtraInputs extraInputsFor(const PairParams& p)
 {
     const bool rolling = p.rollingModel != RollingModel::None;
-    return {p.normalModel == NormalModel::Hertz || rolling, p.rollingModel == RollingModel::ConstantTorque,
+    return {p.normalModel == NormalModel::Hertz || rolling,
+            p.rollingModel == RollingModel::ConstantTorque ||
+                p.rollingModel == RollingModel::ConstantTorqueAbsolute,
             p.rollingModel == RollingModel::Epsd, rolling};
 }
 
@@ -99,6 +111,7 @@ template <class T> struct LawParamsOf
     T rollingDimless; // muR' [-] (muR = rollingLength + muR' R*)
     T rollingDamping; // EPSD etaR [-]
     T rollingTwist;   // 1: the rolling torque also opposes twist about the normal; 0: not [-]
+    T rollingViscous; // type B c_r [s/m]
 };
 using LawParams = LawParamsOf<Real>;
 
@@ -116,7 +129,8 @@ inline LawParams lawParams(const PairParams& p)
             p.rollingLength,
             p.rollingDimensionless,
             p.rollingDampingRatio,
-            p.rollingTwist ? 1.0 : 0.0};
+            p.rollingTwist ? 1.0 : 0.0,
+            p.rollingViscous};
 }
 
 /// Geometry and kinematics of one contact, as seen by particle i.
@@ -130,6 +144,7 @@ template <class T> struct ContactInputOf
     T effectiveRadius{};                        // R* [m] (Hertz, and R_r for dimensionless rolling friction)
     T rollingInertia{}; // I_r = [(I1 + m1 r1^2)^-1 + (I2 + m2 r2^2)^-1]^-1 [kg m^2] (EPSD damping)
     T spinInertia{};    // [1/I1 + 1/I2]^-1 [kg m^2] (type A rest treatment; twist-safe)
+    lanes::Vec3Of<T> angularVelocity{}; // w_i, particle i's own [rad/s] (absolute-frame type A only)
 };
 using ContactInput = ContactInputOf<Real>;
 
@@ -272,6 +287,12 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
         const T muR = p.rollingLength + p.rollingDimless * in.effectiveRadius;
         if constexpr (Model::rolling == RollingModel::ConstantTorque)
             rollingTorque = constantRollingTorqueOf<T>(muR, normalForce, resisted, in.spinInertia, dt);
+        else if constexpr (Model::rolling == RollingModel::ConstantTorqueAbsolute)
+            rollingTorque =
+                constantRollingTorqueOf<T>(muR, normalForce, in.angularVelocity, in.spinInertia, dt);
+        else if constexpr (Model::rolling == RollingModel::Viscous)
+            rollingTorque =
+                viscousRollingTorqueOf<T>(p.rollingViscous, in.effectiveRadius, normalForce, resisted);
         else
         {
             const T kr = 2.25 * c.kn * muR * muR;

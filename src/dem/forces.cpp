@@ -176,22 +176,32 @@ constexpr std::size_t kBatch = 64;         // contacts per batch (a multiple of 
 /// LawParams, one array per field.
 struct LaneParams
 {
-    alignas(64) double kn[kBatch], ktRatio[kBatch], modulus[kBatch],
-        shearModulus[kBatch], rate[kBatch], factor[kBatch], etaRatio[kBatch], mu[kBatch],
-        rollingLength[kBatch], rollingDimless[kBatch], rollingDamping[kBatch], rollingTwist[kBatch];
+    alignas(64) double kn[kBatch], ktRatio[kBatch], modulus[kBatch], shearModulus[kBatch], rate[kBatch],
+        factor[kBatch], etaRatio[kBatch], mu[kBatch], rollingLength[kBatch], rollingDimless[kBatch],
+        rollingDamping[kBatch], rollingTwist[kBatch], rollingViscous[kBatch];
 
     /// The fields, in LawParams' order.
-    std::array<double*, 12> fields()
+    std::array<double*, 13> fields()
     {
-        return {kn,       ktRatio, modulus,       shearModulus,   rate,           factor,
-                etaRatio, mu,      rollingLength, rollingDimless, rollingDamping, rollingTwist};
+        return {kn, ktRatio,       modulus,        shearModulus,   rate,         factor,        etaRatio,
+                mu, rollingLength, rollingDimless, rollingDamping, rollingTwist, rollingViscous};
     }
     void set(std::size_t m, const LawParams& p)
     {
-        const std::array<double, 12> values{
-            p.kn,       p.ktRatio, p.modulus,       p.shearModulus,   p.dampingRate,    p.dampingFactor,
-            p.etaRatio, p.mu,      p.rollingLength, p.rollingDimless, p.rollingDamping, p.rollingTwist};
-        const std::array<double*, 12> f = fields();
+        const std::array<double, 13> values{p.kn,
+                                            p.ktRatio,
+                                            p.modulus,
+                                            p.shearModulus,
+                                            p.dampingRate,
+                                            p.dampingFactor,
+                                            p.etaRatio,
+                                            p.mu,
+                                            p.rollingLength,
+                                            p.rollingDimless,
+                                            p.rollingDamping,
+                                            p.rollingTwist,
+                                            p.rollingViscous};
+        const std::array<double*, 13> f = fields();
         for (std::size_t k = 0; k < f.size(); ++k)
             f[k][m] = values[k];
     }
@@ -328,7 +338,8 @@ VERIDEM_HOT_INLINE LawParamsOf<Lanes> laneLawParams(const LawParams* uniform, co
                 b(uniform->rollingLength),
                 b(uniform->rollingDimless),
                 b(uniform->rollingDamping),
-                b(uniform->rollingTwist)};
+                b(uniform->rollingTwist),
+                b(uniform->rollingViscous)};
     }
     const auto l = [&](const double* a) VERIDEM_INLINE_LAMBDA { return load<Lanes>(a + m); };
     return {l(law.kn),
@@ -342,7 +353,8 @@ VERIDEM_HOT_INLINE LawParamsOf<Lanes> laneLawParams(const LawParams* uniform, co
             l(law.rollingLength),
             l(law.rollingDimless),
             l(law.rollingDamping),
-            l(law.rollingTwist)};
+            l(law.rollingTwist),
+            l(law.rollingViscous)};
 }
 
 /// The law of a world with a single material pair: its parameters and model bit (no table look-up
@@ -352,9 +364,6 @@ struct UniformLaw
     LawParams params;
     unsigned models; // 1 << lawModelIndex
 };
-
-/// The models with rolling resistance (their lawModelIndex bits).
-constexpr unsigned kRollingModels = 0b110110u;
 
 /// A batch of touching contacts for the lane law, pairs or walls: the contact inputs as the scalar
 /// path computes them (pairContactScalar, wallContactInput), one array per component, and the
@@ -366,7 +375,7 @@ struct LawBatch
     alignas(32) double nx[kBatch], ny[kBatch], nz[kBatch], overlap[kBatch], rvx[kBatch], rvy[kBatch],
         rvz[kBatch], mass[kBatch], hx[kBatch], hy[kBatch], hz[kBatch];
     alignas(32) double wx[kBatch], wy[kBatch], wz[kBatch], radius[kBatch], spinInertia[kBatch],
-        rollingInertia[kBatch], rx[kBatch], ry[kBatch], rz[kBatch];
+        rollingInertia[kBatch], rx[kBatch], ry[kBatch], rz[kBatch], ox[kBatch], oy[kBatch], oz[kBatch];
     alignas(32) double normalForce[kBatch], ftx[kBatch], fty[kBatch], ftz[kBatch], springX[kBatch],
         springY[kBatch], springZ[kBatch];
     alignas(32) double torqueX[kBatch], torqueY[kBatch], torqueZ[kBatch], rollingX[kBatch], rollingY[kBatch],
@@ -406,6 +415,9 @@ struct LawBatch
         radius[m] = in.effectiveRadius;
         spinInertia[m] = in.spinInertia;
         rollingInertia[m] = in.rollingInertia;
+        ox[m] = in.angularVelocity.x;
+        oy[m] = in.angularVelocity.y;
+        oz[m] = in.angularVelocity.z;
         rx[m] = rollingSpring.x;
         ry[m] = rollingSpring.y;
         rz[m] = rollingSpring.z;
@@ -420,10 +432,10 @@ struct LawBatch
         return rolling ? Vec3{rollingX[q], rollingY[q], rollingZ[q]} : Vec3{};
     }
     /// The arrays of the inputs (padding lanes repeat the last contact).
-    std::array<double*, 20> inputs()
+    std::array<double*, 23> inputs()
     {
         return {nx, ny,     nz,          overlap,        rvx, rvy, rvz, mass, hx, hy, hz, wx, wy,
-                wz, radius, spinInertia, rollingInertia, rx,  ry,  rz};
+                wz, radius, spinInertia, rollingInertia, rx,  ry,  rz,  ox,   oy, oz};
     }
 };
 
@@ -453,6 +465,8 @@ VERIDEM_HOT_INLINE void lawLanesWith(LawBatch& b, std::size_t padded, Real dt, c
             in.spinInertia = l(b.spinInertia);
             in.rollingInertia = l(b.rollingInertia);
             h.rollingSpring = {l(b.rx), l(b.ry), l(b.rz)};
+            if constexpr (Model::rolling == RollingModel::ConstantTorqueAbsolute)
+                in.angularVelocity = {l(b.ox), l(b.oy), l(b.oz)};
         }
         ContactOutputOf<Lanes> out;
         if constexpr (kUniform)
@@ -591,6 +605,7 @@ VERIDEM_HOT_INLINE void finishBatchLaws(LawBatch& b, const UniformLaw* uniform)
         const Real ri = b.ri[m], rj = b.rj[m];
         ContactInput in;
         in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+        in.angularVelocity = p.angularVelocity[i];
         in.effectiveRadius = ri * rj / (ri + rj);
         in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
         in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
@@ -1025,6 +1040,7 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     in.relativeVelocity = p.velocity[i] - p.velocity[j] -
                           cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
     in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+    in.angularVelocity = p.angularVelocity[i];
     in.effectiveMass = list.activeMass[k];
     if (extra.effectiveRadius)
         in.effectiveRadius = ri * rj / touching;
@@ -1417,6 +1433,7 @@ VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const W
     const Vec3 midStepContactPoint = position - (0.5 * dt) * velocity + arm;
     in.relativeVelocity =
         velocity + cross(angularVelocity, arm) - wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
+    in.angularVelocity = angularVelocity;
     in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
     in.effectiveMass = s.mass;
     in.effectiveRadius = gap.effectiveRadius;
@@ -1557,6 +1574,7 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
         const Real r = p.radius[i];
         ContactInput in;
         in.relativeAngularVelocity = p.angularVelocity[i] - frames[list.wall[k]].angularVelocity;
+        in.angularVelocity = p.angularVelocity[i];
         in.effectiveRadius = r;
         in.spinInertia = 1.0 / p.invInertia[i];
         in.rollingInertia = in.spinInertia + p.mass[i] * r * r;

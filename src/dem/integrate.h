@@ -204,11 +204,25 @@ inline bool kickThenKickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
 }
 
 /// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry
-/// unchanged; only translation moves it).
+/// unchanged; only translation moves it). An oscillating wall is put at its exact position
+/// A sin(Omega (t+dt)), and its velocity is set to A Omega cos(Omega (t+dt/2)): the contact law
+/// pairs it with the particles' half-step velocities, and it is the displacement over the step
+/// divided by dt to O(dt^2).
 inline void moveWalls(std::vector<Wall>& walls, Real dt)
 {
     for (Wall& w : walls)
-        w.displacement += dt * w.motion.velocity;
+    {
+        w.clock += dt;
+        const Real omega = w.motion.oscillationAngularFrequency;
+        if (omega > 0)
+        {
+            w.displacement = std::sin(omega * w.clock) * w.motion.oscillationAmplitude;
+            w.motion.velocity =
+                (omega * std::cos(omega * (w.clock - 0.5 * dt))) * w.motion.oscillationAmplitude;
+        }
+        else
+            w.displacement += dt * w.motion.velocity;
+    }
 }
 
 } // namespace veridem::dem

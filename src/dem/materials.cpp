@@ -34,6 +34,8 @@ void validateMaterial(const Material& m)
         bad(m, "friction mu must be >= 0");
     if (!(m.rollingFrictionLength >= 0) || !(m.rollingFrictionDimensionless >= 0))
         bad(m, "rolling friction must be >= 0");
+    if (!(m.rollingViscousCoefficient >= 0))
+        bad(m, "rolling viscous coefficient must be >= 0 s/m");
     if (m.rollingFrictionLength > 0 && m.rollingFrictionDimensionless > 0)
         bad(m, "give rolling friction either as a length (m) or dimensionless, not both");
     if (m.normalModel == NormalModel::Linear)
@@ -84,6 +86,7 @@ PairParams mixMaterials(const Material& a, const Material& b)
     p.rollingLength = 0.5 * (a.rollingFrictionLength + b.rollingFrictionLength);
     p.rollingDimensionless = 0.5 * (a.rollingFrictionDimensionless + b.rollingFrictionDimensionless);
     p.rollingDampingRatio = 0.5 * (a.rollingDampingRatio + b.rollingDampingRatio);
+    p.rollingViscous = 0.5 * (a.rollingViscousCoefficient + b.rollingViscousCoefficient);
     p.rollingTwist = a.rollingTwist && b.rollingTwist;
     return p;
 }

@@ -26,8 +26,10 @@ enum class NormalModel
 enum class RollingModel
 {
     None,
-    ConstantTorque, // type A, the paper's eq. 3
-    Epsd            // type C, elastic-plastic spring-dashpot
+    ConstantTorque,        // type A, the paper's eq. 3 (opposes w relative to the partner)
+    Epsd,                  // type C, elastic-plastic spring-dashpot
+    Viscous,               // type B, torque proportional to the relative rolling speed
+    ConstantTorqueAbsolute // type A opposing the particle's own w (EDEM "standard", MUSEN)
 };
 
 struct Material
@@ -52,6 +54,7 @@ struct Material
     Real rollingFrictionLength = 0;        // muR as a length [m] (the paper's convention)
     Real rollingFrictionDimensionless = 0; // muR' [-]; contact value muR = muR' * R_r
     Real rollingDampingRatio = 0.3;        // EPSD etaR [-]
+    Real rollingViscousCoefficient = 0;    // type B c_r [s/m]: M = -c_r Fn R_r^2 w_rel
     // Which relative rotation the rolling torque opposes. true (default): all of
     // w_rel = w_i - w_partner, twist about the contact normal included. A ball moving over a curved
     // moving wall acquires spin about the normal from the geometry alone; if nothing resists that
@@ -79,6 +82,7 @@ struct PairParams
     Real rollingLength = 0;        // [m]
     Real rollingDimensionless = 0; // [-]
     Real rollingDampingRatio = 0;  // [-]
+    Real rollingViscous = 0;       // type B c_r [s/m]
     bool rollingTwist = true;      // rolling torque also opposes twist about the normal
 };
 

@@ -60,7 +60,8 @@ dem::Material readMaterial(TableReader& t)
     m.friction = t.number("friction", 0.5);
     t.requireNonNegative("friction", m.friction, "");
     const std::string rolling =
-        t.choice("rolling_model", "constant_torque", {"none", "constant_torque", "epsd"});
+        t.choice("rolling_model", "constant_torque",
+                 {"none", "constant_torque", "epsd", "viscous", "constant_torque_absolute"});
     m.rollingFrictionLength = t.number("rolling_friction", 0.0);
     t.requireNonNegative("rolling_friction", m.rollingFrictionLength, "m");
     m.rollingFrictionDimensionless = t.number("rolling_friction_dimensionless", 0.0);
@@ -70,10 +71,16 @@ dem::Material readMaterial(TableReader& t)
                "give rolling friction as a length or dimensionless, not both");
     m.rollingDampingRatio = t.number("rolling_damping_ratio", 0.3);
     m.rollingTwist = t.boolean("rolling_twist", true);
+    m.rollingViscousCoefficient = t.number("rolling_viscous_coefficient", 0.0);
+    t.requireNonNegative("rolling_viscous_coefficient", m.rollingViscousCoefficient, "s/m");
+    if (rolling == "viscous" && !(m.rollingViscousCoefficient > 0))
+        t.fail("rolling_viscous_coefficient", "must be > 0 s/m for rolling_model = \"viscous\"");
     const bool anyRolling = m.rollingFrictionLength > 0 || m.rollingFrictionDimensionless > 0;
-    m.rollingModel = !anyRolling || rolling == "none" ? dem::RollingModel::None
-                     : rolling == "epsd"              ? dem::RollingModel::Epsd
-                                                      : dem::RollingModel::ConstantTorque;
+    m.rollingModel = rolling == "viscous"                    ? dem::RollingModel::Viscous
+                     : !anyRolling || rolling == "none"      ? dem::RollingModel::None
+                     : rolling == "epsd"                     ? dem::RollingModel::Epsd
+                     : rolling == "constant_torque_absolute" ? dem::RollingModel::ConstantTorqueAbsolute
+                                                             : dem::RollingModel::ConstantTorque;
     t.finish();
     return m;
 }
@@ -94,6 +101,12 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
         plane.normal = normal / length(normal);
         wall.shape = plane;
         wall.motion.velocity = t.vec3("velocity", {});
+        wall.motion.oscillationAmplitude = t.vec3("oscillation_amplitude", {});
+        wall.motion.oscillationAngularFrequency = t.number("oscillation_omega", 0.0);
+        if (wall.motion.oscillationAngularFrequency < 0)
+            t.fail("oscillation_omega", "must be >= 0 rad/s");
+        if (wall.motion.oscillationAngularFrequency > 0 && length(wall.motion.velocity) > 0)
+            t.fail("oscillation_omega", "an oscillating plane cannot also have a steady velocity");
         const Real omega = t.number("omega", 0.0);
         wall.motion.angularVelocity = omega * plane.normal;
         wall.motion.rotationCentre = plane.point;

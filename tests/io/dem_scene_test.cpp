@@ -89,6 +89,52 @@ TEST(DemScene, ErrorsNameWhatIsWrong)
             .find("'restitution' must be in (0, 1]"),
         std::string::npos);
     EXPECT_NE(errorOf("[simulation]\nduration = 1\n").find("missing required key 'dt'"), std::string::npos);
+    const std::string material =
+        "[simulation]\ndt = 1e-5\nduration = 1\n[[material]]\nname = \"a\"\ndensity = 1000\nkn = 1e3\n";
+    EXPECT_NE(
+        errorOf(material + "rolling_model = \"viscous\"\n").find("'rolling_viscous_coefficient' must be > 0"),
+        std::string::npos);
+    const std::string wall = material + "[[wall]]\nname = \"plate\"\nmaterial = \"a\"\nnormal = [0,0,1]\n";
+    EXPECT_NE(errorOf(wall + "oscillation_omega = -1\n").find("'oscillation_omega' must be >= 0"),
+              std::string::npos);
+    EXPECT_NE(
+        errorOf(wall + "oscillation_omega = 10\nvelocity = [1,0,0]\n").find("cannot also have a steady"),
+        std::string::npos);
+}
+
+TEST(DemScene, ReadsTheNewRollingModelsAndTheOscillatingPlate)
+{
+    const io::DemScene s = load(R"([simulation]
+dt = 1e-5
+duration = 1
+[[material]]
+name = "a"
+density = 1000
+kn = 1e3
+rolling_model = "viscous"
+rolling_viscous_coefficient = 0.25
+[[material]]
+name = "b"
+density = 1000
+kn = 1e3
+rolling_model = "constant_torque_absolute"
+rolling_friction = 1e-5
+[[wall]]
+name = "plate"
+material = "a"
+normal = [0, 0, 1]
+oscillation_amplitude = [0, 0, 0.001]
+oscillation_omega = 125.0
+[[sphere]]
+material = "a"
+radius = 0.01
+position = [0, 0, 0.02]
+)");
+    EXPECT_EQ(s.world.materials[0].rollingModel, dem::RollingModel::Viscous);
+    EXPECT_EQ(s.world.materials[0].rollingViscousCoefficient, 0.25);
+    EXPECT_EQ(s.world.materials[1].rollingModel, dem::RollingModel::ConstantTorqueAbsolute);
+    EXPECT_EQ(s.world.walls[0].motion.oscillationAmplitude.z, 0.001);
+    EXPECT_EQ(s.world.walls[0].motion.oscillationAngularFrequency, 125.0);
 }
 
 TEST(DemScene, TimeStepLimitFromStiffnessAndMass)

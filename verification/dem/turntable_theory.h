@@ -16,6 +16,8 @@
 // default convention (the torque opposes the whole relative angular velocity, twist included), which
 // dilutes the rolling torque by |w_perp| / |w_rel| while the ball's spin about k differs from Omega
 // (the balls start with s = 0) and relaxes s towards Omega. The two coincide once s = Omega.
+// With `absoluteFrame` the torque opposes the ball's own w (EDEM "standard", MUSEN): twistRate = s,
+// so the spin the ball shares with the table dilutes the rolling torque and is itself braked.
 //
 // Guiding centre: c = r + k x v / omega_o, rho = |v| / omega_o with omega_o = (2/7) Omega. Far from
 // the axis (|c| >> (5/7) rho) the centre drifts at  dc/dt = V_t k x g_hat - V_r c_hat  with
@@ -32,12 +34,14 @@ namespace veridem::verify
 
 struct RollingTableParams
 {
-    Real omega = 0;           // table angular velocity about k [rad/s]
-    Vec3 gravityInPlane;      // in-plane part of gravity, table coordinates (z = 0) [m/s^2]
-    Real gravityNormal = 0;   // g cos(alpha) [m/s^2]
-    Real rollingFriction = 0; // muR [m]
-    Real radius = 0;          // a [m]
-    bool twist = true;        // torque opposes the whole w_rel (engine default) or only its rolling part
+    Real omega = 0;             // table angular velocity about k [rad/s]
+    Vec3 gravityInPlane;        // in-plane part of gravity, table coordinates (z = 0) [m/s^2]
+    Real gravityNormal = 0;     // g cos(alpha) [m/s^2]
+    Real rollingFriction = 0;   // muR [m]
+    Real radius = 0;            // a [m]
+    bool twist = true;          // torque opposes the whole w_rel (engine default) or only its rolling part
+    bool absoluteFrame = false; // torque opposes the ball's own w (type A absolute frame): the
+                                // spin about k counts in full, not relative to Omega
 };
 
 struct RollingTableState
@@ -55,7 +59,7 @@ inline RollingTableState rollingTableRate(const RollingTableParams& p, const Rol
 {
     const Vec3 slip = s.v - p.omega * kCross(s.r); // u_rel [m/s]
     const Real rolling = length(slip) / p.radius;  // |w_perp| [rad/s]
-    const Real twistRate = p.twist ? s.spin - p.omega : 0.0;
+    const Real twistRate = p.absoluteFrame ? s.spin : p.twist ? s.spin - p.omega : 0.0;
     const Real relative = std::sqrt(rolling * rolling + twistRate * twistRate); // |w_rel|
     const Real resistance = p.rollingFriction * p.gravityNormal / p.radius;     // muR gN / a [m/s^2]
     RollingTableState rate;

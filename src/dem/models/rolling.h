@@ -14,6 +14,11 @@
 //     dMk = -kr w_rel dt, |Mk| <= muR Fn,  kr = 2.25 kn muR^2   (kn muR'^2 R_r^2 form),
 //     Md  = -Cr w_rel while |Mk| < muR Fn (zero once fully mobilised), Cr = etaR 2 sqrt(I_r kr).
 //   It holds a ball at rest on an incline with tan(theta) <= muR'.
+//
+// Type B, viscous, and the absolute-frame variant of type A (M = -muR Fn w_i/|w_i| with the
+// particle's own w_i, as EDEM's "standard" rolling friction and MUSEN apply it) are selectable
+// too; the absolute variant is not objective on moving walls (rolling_resistance_models shows the
+// consequence) and, for particle pairs, uses particle i's w and applies the reaction to j.
 #pragma once
 
 #include "core/hot.h"
@@ -46,6 +51,23 @@ VERIDEM_HOT_INLINE lanes::Vec3Of<T> constantRollingTorqueOf(T muR, T normalForce
     return select(none, V{}, relativeAngularVelocity * scale);
 }
 
+/// Type B, viscous (Ai et al. 2011's class B; the torque grows with the rolling speed as in the
+/// viscoelastic rolling friction of Brilliantov & Poeschel 1998): M = -c_r Fn R_r^2 w_rel,
+/// c_r [s/m], R_r [m], Fn [N] (clipped >= 0). A ball rolling on a plane slows as exp(-(5/7) c_r g t)
+/// and on an incline tends to v = tan(theta)/c_r; it never holds a ball at rest on a slope.
+template <class T>
+VERIDEM_HOT_INLINE lanes::Vec3Of<T> viscousRollingTorqueOf(T coefficient, T rollingRadius, T normalForce,
+                                                           const lanes::Vec3Of<T>& relativeAngularVelocity)
+{
+    using namespace lanes;
+    using V = Vec3Of<T>;
+    const MaskOf<T> none = normalForce <= T{};
+    if (allLanes(none))
+        return V{};
+    const T scale = -(coefficient * normalForce * rollingRadius * rollingRadius);
+    return select(none, V{}, relativeAngularVelocity * scale);
+}
+
 template <class T> struct RollingSpringResultOf
 {
     lanes::Vec3Of<T> torque; // on the particle [N m]
@@ -75,6 +97,11 @@ epsdRollingTorqueOf(T kr, T cr, T muR, T normalForce, lanes::Vec3Of<T> spring,
 }
 
 /// Scalar forms (unit tests).
+inline Vec3 viscousRollingTorque(Real coefficient, Real rollingRadius, Real normalForce,
+                                 const Vec3& relativeAngularVelocity)
+{
+    return viscousRollingTorqueOf<Real>(coefficient, rollingRadius, normalForce, relativeAngularVelocity);
+}
 inline Vec3 constantRollingTorque(Real muR, Real normalForce, const Vec3& relativeAngularVelocity,
                                   Real rollingInertia, Real dt)
 {

@@ -41,6 +41,12 @@ struct WallMotion
     Vec3 velocity;        // translation [m/s]
     Vec3 angularVelocity; // [rad/s], along the shape's symmetry axis
     Vec3 rotationCentre;  // a point of the rotation axis at t = 0 [m] (moves with the translation)
+    // Sinusoidal translation (vibrating plate): displacement A sin(Omega t) with amplitude vector
+    // A [m] and angular frequency Omega [rad/s] (> 0 switches it on). The step then sets
+    // `velocity` itself to A Omega cos(Omega t) at the half step (see moveWalls); a steady
+    // translation cannot be combined with it.
+    Vec3 oscillationAmplitude;
+    Real oscillationAngularFrequency = 0;
 };
 
 struct Wall
@@ -50,6 +56,7 @@ struct Wall
     WallMotion motion;
     std::uint32_t material = 0;
     Vec3 displacement; // accumulated translation since t = 0 [m] (updated by the step)
+    Real clock = 0;    // time since t = 0 [s] (updated by the step; drives the oscillation)
 };
 
 /// Contact of a sphere (centre x, radius r) with a wall shape.

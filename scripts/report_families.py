@@ -1,0 +1,189 @@
+"""Families of verification cases and the figures of the benchmark families (Chung & Ooi,
+convergence orders, rolling frames) for scripts/report.py."""
+
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from report_util import column, save  # noqa: E402
+
+# Families of cases: (key, title, what it checks, name prefixes). A case belongs to the first family
+# whose prefix it starts with; the last family takes the rest.
+FAMILIES = [
+    ("paper", "The paper's 3D tests (turntable, dish, many balls)",
+     "Xiang, Munjiza, Latham & Guises: the flat turntable Tests 1-5 (Figs. 3-9) against the rigid-rolling "
+     "equations, the rotating concave dish (Figs. 10-12) and the Liquid Reflections scene.",
+     ("turntable_", "dish_", "liquid_")),
+    ("fdem", "2D FEM/DEM (the paper's sliding block and element checks)",
+     "The paper's Fig. 1 sliding block, L = v²/(2μg), and the constant-strain-triangle checks.",
+     ("sliding_block", "fdem_")),
+    ("chung_ooi", "Chung & Ooi (2011) impact benchmarks 1-8",
+     "Hertz-Mindlin impacts of Chung & Ooi, each for both of its materials: tests 1-3 against the Hertz closed "
+     "forms, tests 4-8 as sweeps drawn over the rigid-body lines. Tangential quantities use contact-point "
+     "velocities unless named v_t (centre).",
+     ("chung_ooi_",)),
+    ("asmar", "Asmar-style tests",
+     "Analytic single-situation tests in the spirit of Asmar et al. (2002): bouncing ball, vibrating plate, "
+     "Newton's cradle, energy over many elastic collisions.",
+     ("asmar_",)),
+    ("rolling", "Rolling resistance (Ai, Chen, Rotter & Ooi 2011)",
+     "Type B (viscous) and the absolute-frame type A against closed forms, and the turntable case that separates "
+     "the relative and absolute frames. Types A and C: rolling_resistance_stop (single-particle family).",
+     ("rolling_resistance_models", "rolling_turntable")),
+    ("convergence", "Convergence orders in dt",
+     "Collision, friction and rolling errors at dt, dt/2, dt/4 (more levels where the error scatters); the observed "
+     "order against the scheme's.",
+     ("convergence_",)),
+    ("single", "Single-particle and contact-law checks",
+     "Free fall, restitution, sliding-to-rolling, inclines, rolling types A and C, moving walls, two-sphere "
+     "collisions.",
+     ()),
+]
+
+
+def family_of(case):
+    for key, _, _, prefixes in FAMILIES[:-1]:
+        if any(case.startswith(p) for p in prefixes):
+            return key
+    return FAMILIES[-1][0]
+
+
+def material_of(name):
+    for suffix in ("_sweep", "_force", "_restitution", "_energy", "_orbit"):
+        if name.endswith(suffix):
+            return name[: -len(suffix)]
+    return name
+
+
+# Chung & Ooi sweeps: per case, panels (x column, y column, rigid column or None, x label, y label, log x).
+CHUNG_OOI_PANELS = {
+    "chung_ooi_t4": [("theta_deg", "e_t", "e_t_rigid", "incidence angle θ (deg)", "tangential COR e_t = v_t'/v_t", False),
+                     ("theta_deg", "omega", "omega_rigid", "incidence angle θ (deg)", "rebound angular velocity ω' (rad/s)", False),
+                     ("theta_deg", "rebound_deg", "rebound_deg_rigid", "incidence angle θ (deg)",
+                      "rebound angle of the contact point (deg)", False)],
+    "chung_ooi_t5": [("psi1", "psi2", "psi2_rigid", "ψ1 = V_t/(μ V_n)", "ψ2 = V_t'/(μ V_n')", False),
+                     ("psi1", "spin", "spin_rigid", "ψ1 = V_t/(μ V_n)", "−R ω'/(μ V_n)", False)],
+    "chung_ooi_t6": [("X", "beta", "beta_rigid", "X = 3.5 μ (1+e) V_n / V_t", "β = −V_t'/V_t", True),
+                     ("tan_incidence", "tan_recoil", "tan_recoil_rigid", "tan(incidence) = V_t/V_n",
+                      "tan(recoil) = V_t'/V_n'", False)],
+    "chung_ooi_t7": [("omega", "omega_out_1", "omega", "initial spin ω (rad/s)", "ω' (rad/s)", True),
+                     ("omega", "vt_out_1", None, "initial spin ω (rad/s)", "v_t' (m/s)", True)],
+}
+CHUNG_OOI_PANELS["chung_ooi_t8"] = CHUNG_OOI_PANELS["chung_ooi_t6"]
+MARKERS = ["o", "s", "^", "D"]
+
+
+def chung_ooi_sweep_figure(out_dir, case, named):
+    panels = CHUNG_OOI_PANELS[case]
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.4))
+    axes = np.atleast_1d(axes)
+    for ax, (xc, yc, rc, xl, yl, logx) in zip(axes, panels):
+        for k, (name, (header, data)) in enumerate(sorted(named.items())):
+            x, y = column(header, data, xc), column(header, data, yc)
+            if x is None or y is None:
+                continue
+            order = np.argsort(x)
+            colour = plt.cm.tab10(k)
+            ax.plot(x[order], y[order], MARKERS[k % 4], color=colour, mfc="none", ms=6, label=f"DEM, {material_of(name)}")
+            rigid = column(header, data, rc) if rc else None
+            if rigid is not None and k == 0:
+                ax.plot(x[order], rigid[order], "-", color="k", lw=1.3, label="rigid body")
+        if logx:
+            ax.set_xscale("log")
+        ax.set_xlabel(xl)
+        ax.set_ylabel(yl)
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=7.5)
+    fig.suptitle(f"{case.replace('chung_ooi_t', 'Chung & Ooi test ')}: DEM (markers) over the rigid-body line",
+                 fontsize=10)
+    fig.tight_layout()
+    return save(fig, out_dir, f"{case}_sweep")
+
+
+def chung_ooi_force_figure(out_dir, case, named):
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.4))
+    for k, (name, (header, data)) in enumerate(sorted(named.items())):
+        t, d, f, fh = (column(header, data, c) for c in ("t", "delta", "F", "F_hertz"))
+        if d is None or f is None:
+            continue
+        colour = plt.cm.tab10(k)
+        a1.plot(d * 1e6, f, color=colour, lw=1.0, label=f"DEM, {material_of(name)}")
+        if fh is not None:
+            a1.plot(d * 1e6, fh, "--", color="k", lw=0.8, label="Hertz (4/3) E*√R* δ^1.5" if k == 0 else None)
+        a2.plot((t - t[0]) * 1e6, f, color=colour, lw=1.0, label=material_of(name))
+    a1.set_xlabel("overlap δ (µm)")
+    a1.set_ylabel("normal force F (N)")
+    a2.set_xlabel("time since first touch (µs)")
+    a2.set_ylabel("normal force F (N)")
+    for ax in (a1, a2):
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=7.5)
+    fig.suptitle(f"{case.replace('chung_ooi_t', 'Chung & Ooi test ')}: force-overlap and force-time", fontsize=10)
+    fig.tight_layout()
+    return save(fig, out_dir, f"{case}_force")
+
+
+def chung_ooi_restitution_figure(out_dir, case, named):
+    fig, ax = plt.subplots(figsize=(5.6, 5))
+    ax.plot([0, 1], [0, 1], "-", color="k", lw=1.2, label="e_out = e_in")
+    for k, (name, (header, data)) in enumerate(sorted(named.items())):
+        ax.plot(column(header, data, "e_in"), column(header, data, "e_out"), MARKERS[k % 4], mfc="none",
+                color=plt.cm.tab10(k), ms=7, label=f"DEM, {material_of(name)}")
+    ax.set_xlabel("input restitution e_in")
+    ax.set_ylabel("measured restitution e_out")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("Chung & Ooi test 3: e_out against e_in", fontsize=10)
+    return save(fig, out_dir, f"{case}_restitution")
+
+
+def convergence_figure(out_dir, case, header, data, notes):
+    names = {}
+    for note in notes:
+        m = re.match(r"study (\d+): (.*)", note)
+        if m:
+            names[int(m.group(1))] = m.group(2)
+    fig, ax = plt.subplots(figsize=(8.5, 6))
+    study = column(header, data, "study")
+    for k, index in enumerate(sorted(set(study.astype(int)))):
+        rows = study == index
+        dt, err = column(header, data, "dt_over_tc")[rows], column(header, data, "error")[rows]
+        ref = column(header, data, "error_expected_slope")
+        colour = plt.cm.tab10(k)
+        ax.loglog(dt, err, "o-", color=colour, lw=1.2, label=names.get(index, f"study {index}"))
+        if ref is not None:
+            ax.loglog(dt, ref[rows], ":", color=colour, lw=1)
+    ax.set_xlabel("dt / reference time (contact time; τ for rolling)")
+    ax.set_ylabel("|error|")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=7, loc="upper left")
+    ax.set_title("Observed convergence (solid) against the scheme's expected order (dotted)", fontsize=10)
+    return save(fig, out_dir, f"{case}_orders")
+
+
+def rolling_frames_figure(out_dir, case, named):
+    fig, ax = plt.subplots(figsize=(8, 4.8))
+    drawn = False
+    for k, name in enumerate(("relative_orbit", "absolute_orbit")):
+        if name not in named:
+            continue
+        header, data = named[name]
+        t, rho, rho_t = column(header, data, "t"), column(header, data, "rho"), column(header, data, "rho_theory")
+        colour = plt.cm.tab10(k)
+        ax.plot(t, rho * 1e3, color=colour, lw=1.1, label=f"DEM, {name.replace('_orbit', '')} frame")
+        if k == 0:
+            ax.plot(t, rho_t * 1e3, "--", color="k", lw=1.5, label="rigid rolling T2 (RK4), relative frame")
+        drawn = True
+    if not drawn:
+        plt.close(fig)
+        return None
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("orbit radius ρ = |v|/ω_o (mm)")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("Turntable, ball set down co-rotating near the axis: orbit growth by rolling friction", fontsize=10)
+    return save(fig, out_dir, f"{case}_radius")
