@@ -395,3 +395,121 @@ TEST(Determinism, BlockSumsEqualAPlainSerialLoopOverSlots)
 
 } // namespace
 } // namespace veridem::dem
+
+namespace veridem::dem
+{
+namespace
+{
+
+/// The jostling box with the given materials, particle i of material i % count, a floor disk that
+/// moves and turns (the plane-wall pass) and, if `dish`, a concave dish below it (the general wall
+/// pass: not every wall is a plane).
+World modelBox(const std::vector<Material>& materials, bool dish)
+{
+    World world = jostlingBox(true, 10);
+    world.materials.clear();
+    for (const Material& m : materials)
+        world.addMaterial(m);
+    for (std::size_t i = 0; i < world.particles.size(); ++i)
+        world.particles.material[i] = static_cast<std::uint32_t>(i % materials.size());
+    const Real box = 10 * 2.05e-3;
+    Wall& floor = world.walls.back();
+    floor.shape = PlaneShape{{0.5 * box, 0.5 * box, 0}, {0, 0, 1}, 0.45 * box};
+    floor.motion.velocity = {0.02, -0.01, 0};
+    floor.motion.angularVelocity = {0, 0, 40};
+    floor.motion.rotationCentre = {0.5 * box, 0.5 * box, 0};
+    floor.material = static_cast<std::uint32_t>(materials.size() - 1);
+    if (dish)
+    {
+        Wall bowl;
+        bowl.shape = DishShape{{0.5 * box, 0.5 * box, -0.02e-3}, 0.3}; // below the floor's centre
+        world.walls.push_back(bowl);
+    }
+    return world;
+}
+
+Material modelMaterial(const std::string& name, NormalModel normal, RollingModel rolling)
+{
+    Material m;
+    m.name = name;
+    m.normalStiffness = 1000;
+    m.restitution = 0.6; // damping from restitution (not a damping rate)
+    m.friction = 0.4;
+    m.normalModel = normal;
+    if (normal == NormalModel::Hertz)
+    {
+        m.youngsModulus = 1e7;
+        m.poissonRatio = 0.3;
+    }
+    m.rollingModel = rolling;
+    if (rolling == RollingModel::ConstantTorque || rolling == RollingModel::ConstantTorqueAbsolute)
+        m.rollingFrictionLength = 5e-5;
+    else if (rolling == RollingModel::Epsd)
+        m.rollingFrictionDimensionless = 0.05;
+    else if (rolling == RollingModel::Viscous)
+        m.rollingViscousCoefficient = 2; // stable: c Fn R^2 dt / I << 1
+    return m;
+}
+
+/// Every contact model in the lane path gives the bits of the scalar path (the law written once,
+/// contact_law.h), for pairs and walls, plane and general, one material or several mixed in one
+/// batch (per-lane parameters and models), on every instruction-set variant.
+TEST(Determinism, EveryModelInLanesMatchesScalarPath)
+{
+    using N = NormalModel;
+    using R = RollingModel;
+    const std::vector<std::vector<Material>> cases = {
+        {modelMaterial("linear", N::Linear, R::None)},
+        {modelMaterial("hertz", N::Hertz, R::None)},
+        {modelMaterial("linearA", N::Linear, R::ConstantTorque)},
+        {modelMaterial("hertzEpsd", N::Hertz, R::Epsd)},
+        {modelMaterial("viscous", N::Linear, R::Viscous)},
+        {modelMaterial("absolute", N::Hertz, R::ConstantTorqueAbsolute)},
+        {modelMaterial("a", N::Linear, R::None), modelMaterial("b", N::Linear, R::Epsd),
+         modelMaterial("c", N::Linear, R::ConstantTorque), modelMaterial("d", N::Linear, R::Viscous),
+         modelMaterial("e", N::Linear, R::ConstantTorqueAbsolute)},
+        {modelMaterial("f", N::Hertz, R::None), modelMaterial("g", N::Hertz, R::Epsd),
+         modelMaterial("h", N::Hertz, R::Viscous)}};
+    const std::string initial = laneKernelName();
+    for (std::size_t c = 0; c < cases.size(); ++c)
+        for (bool dish : {false, true})
+        {
+            const auto run = [&](bool batched)
+            {
+                World world = modelBox(cases[c], dish);
+                world.batchedContactKernel = batched;
+                for (int s = 0; s < 300; ++s)
+                    step(world, 1e-5);
+                return world;
+            };
+            const World scalar = run(false);
+            ASSERT_GT(scalar.health.touchingPairs, 0u);
+            ASSERT_GT(scalar.health.touchingWalls, 0u);
+            ASSERT_TRUE(scalar.health.finite)
+                << c; // a comparison of bits is meaningful only for finite states
+            for (const char* variant : {"avx2", "portable"})
+            {
+                if (!selectLaneKernel(variant))
+                    continue; // this CPU cannot run it
+                const World batched = run(true);
+                const std::string what = "case " + std::to_string(c) + (dish ? " with dish " : " ") + variant;
+                EXPECT_TRUE(sameBits(batched.particles.position, scalar.particles.position)) << what;
+                EXPECT_TRUE(sameBits(batched.particles.velocity, scalar.particles.velocity)) << what;
+                EXPECT_TRUE(sameBits(batched.particles.angularVelocity, scalar.particles.angularVelocity))
+                    << what;
+                EXPECT_TRUE(sameBits(batched.neighbors.activeSpring, scalar.neighbors.activeSpring)) << what;
+                EXPECT_TRUE(sameBits(batched.neighbors.activeRolling, scalar.neighbors.activeRolling))
+                    << what;
+                EXPECT_TRUE(
+                    sameBits(batched.wallContacts.tangentialSpring, scalar.wallContacts.tangentialSpring))
+                    << what;
+                EXPECT_TRUE(sameBits(batched.wallContacts.rollingSpring, scalar.wallContacts.rollingSpring))
+                    << what;
+                EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << what;
+            }
+        }
+    ASSERT_TRUE(selectLaneKernel(initial));
+}
+
+} // namespace
+} // namespace veridem::dem
