@@ -6,18 +6,18 @@
 // without changing a single bit of the result; only the health record (the largest overlap, the
 // first slot that has it) must be folded in block order. Each thread takes a contiguous range of
 // blocks (its partners stay together in cache: a finer mix of blocks, balanced to 50.1 % of the
-// candidates on the 20k bed, made the two threads' total work ~10 % larger), with the boundary at
+// candidates on the 20k bed, makes the two threads' total work ~10 % larger), with the boundary at
 // the block edge nearest to the thread's share of the weight.
 //
 // The threads need not be equally fast: on a shared machine another tenant can slow one core
 // for seconds at a time. So the shares follow each thread's measured speed (forces.cpp,
 // scheduleBlocks): the pair stage times each thread on its own run, and the boundary moves by
-// whole blocks when the speeds predict a shorter stage. Session 13 balanced instead by letting a
-// thread that finished early take the others' last blocks every step; on a host whose two vCPUs
-// are ~480 ns apart (session 15) each block taken moved its rows to the other core and back every
-// step, and two threads lost up to a fifth of their rate to it. A moved boundary moves the rows of
-// one block once. Stage 4 (world.cpp, PassSchedule) is balanced the same way on its own
-// measured rates, at a finer grain (64 particles).
+// whole blocks when the speeds predict a shorter stage. No thread takes another's blocks within a
+// step: on a host whose two vCPUs are ~480 ns apart, a block taken every step moves its rows to
+// the other core and back every step (20k bed, two threads: 2.49e7 particle-steps/s with that
+// against 3.14e7 without, docs/performance.md). A moved boundary moves the rows of one block once. Stage 4
+// (world.cpp, PassSchedule) is balanced the same way on its own measured rates, at a finer grain (64
+// particles).
 #pragma once
 
 #include <cstddef>

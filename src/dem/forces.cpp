@@ -122,18 +122,17 @@ struct PairSink
 };
 
 // ---------------------------------------------------------------------------------------------
-// Contacts in vector lanes (linear spring-dashpot, no rolling resistance: the reference bed's law).
+// Contacts in vector lanes (every model).
 //
 // One contact is a chain of dependent divisions and square roots (normal, lever arms, m*, the
 // end-of-step normal speed, the spring rotation, the Coulomb cap), so a scalar loop waits on
-// latency. Here the same operations run on independent contacts in the lanes of a GCC vector type:
-// four with AVX2 (x86-64-v3), two with SSE2 (the portable variant), chosen at run time from the
-// CPU. (Eight AVX-512 lanes measured no faster on Zen 4: the loads and stores around the
-// arithmetic dominate.) Every lane performs exactly the IEEE operations of the scalar
-// path (pairContactScalar + evaluateContact) in the same order, branches become selects, and no
-// multiply-add is fused (-ffp-contract=off), so the bits are those of the scalar path on every
-// variant (tests/dem/determinism_test.cpp checks it). Contacts with another law take the scalar
-// path. The wall contacts of the same law use the same lane law (linearLawLanes, LawBatch).
+// latency. Here the same law (contactLaw, contact_law.h, a template over the number type) runs
+// on independent contacts in the lanes of a GCC vector type: four with AVX2 (x86-64-v3), two with
+// SSE2 (the portable variant), chosen at run time from the CPU. (Eight AVX-512 lanes measure no
+// faster on Zen 4, and 1-3 % on Zen 5, inside the noise: the gathers and the scatter around the
+// arithmetic dominate.) No multiply-add is fused (-ffp-contract=off), so the bits are those of
+// the scalar path (pairContactScalar + evaluateContact) on every variant
+// (tests/dem/determinism_test.cpp checks it for every model). Pairs and walls share LawBatch.
 // ---------------------------------------------------------------------------------------------
 using namespace lanes; // Lanes2, Lanes4, Index4, kWidth, load, store (dem/lanes.h)
 
@@ -700,11 +699,11 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         pairExtraInputs(world, b, law, padded);
 
     const Lanes zero = {}, one = zero + 1.0;
-    // No prefetch of the partners' velocity rows: the lambda that was to issue them was never
-    // compiled into the kernel (GCC 12 deletes calls of a lambda whose only effect is a prefetch
-    // once it is inlined into an always_inline function), and issuing them directly (two per
-    // contact, eight contacts ahead) measured no faster on the 20k bed (session 14): the
-    // out-of-order core hides those loads; the selection pass's prefetch of the positions stays.
+    // No prefetch of the partners' velocity rows: issued directly (two per contact, eight contacts
+    // ahead) they measure no faster on the 20k bed, since the out-of-order core hides those loads;
+    // the selection pass's prefetch of the positions stays. (Never issue a prefetch from a lambda
+    // here: GCC 12 deletes calls of a lambda whose only effect is a prefetch once it is inlined
+    // into an always_inline function.)
     // 1. Inputs (as pairContactScalar).
     for (std::size_t m = 0; m < padded; m += kLanes)
     {
@@ -1083,14 +1082,12 @@ namespace
 
 /// The runs of blocks the threads evaluate (world.pairSchedule), remade when the candidate
 /// sub-list, the slots or the thread count changed. Weight of a block: its touching candidates
-/// (the selection and the kernel follow their count), a cross-block one counted three times. On
-/// the 20k bed two threads took 11-25 % longer on blocks 0-9 than on 10-19 (3000 steps, six runs),
-/// which hold 9.6 % more candidates but 55 % more cross-block ones, whose partners lie in
-/// another block (rows further away in memory) and which store a deferred entry. The weight 3
-/// fits that measurement; it moves the boundary one block down, and the longer thread's time fell
-/// from 2.44-2.97 s to 2.12-2.40 s (the other thread now 1-14 % shorter). With the deferred
-/// entries in slot order (no longer interleaved between threads) the imbalance at the old
-/// boundary stayed (17-21 %), so it is not false sharing. The order of the sums does not depend on
+/// (the selection and the kernel follow their count), a cross-block one counted three times,
+/// because its partner lies in another block and it stores a deferred entry. On the 20k bed,
+/// blocks 0-9 hold 9.6 % more candidates but 55 % more cross-block ones, and two threads split
+/// by plain count take 11-25 % longer on them; the weight 3 fits that (the longer thread's pair
+/// time is 2.12-2.40 s against 2.44-2.97 s per 3000 steps). The imbalance is not false sharing:
+/// a block's deferred entries are one range in slot order. The order of the sums does not depend on
 /// the schedule: any split gives the same bits. `activeFrom`: particle -> its first candidate.
 template <class ActiveFrom>
 const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, int chunks,

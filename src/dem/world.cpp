@@ -251,7 +251,7 @@ bool integrationInLanes(const World& world)
 /// step() for a world of one particle (a single-ball verification run): the same stages in the
 /// same order with the same operations, so the same bits, but the particle's state stays in
 /// registers from the kick-drift to the kick instead of being stored by one stage and loaded by
-/// the next (docs/performance.md, session 11: ~1.4x the steps per second). A single particle has no pair
+/// the next (~1.4x the steps per second; docs/performance.md). A single particle has no pair
 /// slots, so stage 3 only resets the pair health. `wallContacts`: wallContactsOf or its AVX2
 /// variant (inlined into stepOneParticlePortable and stepOneParticleAvx2, one caller each).
 template <class WallContacts>
@@ -298,7 +298,7 @@ void stepOneParticlePortable(World& world, Real dt)
 
 /// The one-particle step compiled for x86-64-v3: GCC's three-operand AVX encodings of the same
 /// scalar operations (no fused multiply-add: -ffp-contract=off), so the same bits in ~13 % fewer
-/// instructions (callgrind, one ball on a turntable; docs/performance.md, session 13).
+/// instructions (callgrind, one ball on a turntable; docs/performance.md).
 VERIDEM_AVX2_TARGET void stepOneParticleAvx2(World& world, Real dt)
 {
     stepOneParticleBody(world, dt, wallContactsOfAvx2);
