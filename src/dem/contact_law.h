@@ -29,7 +29,7 @@ template <NormalModel N, RollingModel R> struct LawModel
 /// Calls f(LawModel<...>{}) for the models of p (one switch per call, outside the law).
 template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairParams& p, F&& f)
 {
-    const auto rolling = [&]<NormalModel N>() -> decltype(auto)
+    const auto rolling = [&]<NormalModel N>() VERIDEM_INLINE_LAMBDA -> decltype(auto)
     {
         switch (p.rollingModel)
         {
