@@ -1,3 +1,6 @@
+// Above 500 lines: the force stage with its execution machinery (instruction-set dispatch, batches,
+// block sums, the thread split); splitting the machinery into its own module is the next step of
+// the contact-core rebuild (docs/architecture.md, "Contact law").
 // Contact lever arms ("contact radius convention", docs/models.md):
 //  * sphere-wall: the lever arm is the undeformed radius r. The contact-point velocity
 //    v + w x (-r n) and the torque (-r n) x Ft use the same arm, so the discrete dynamics are

@@ -1,3 +1,4 @@
+// Above 500 lines: every determinism check runs on the one jostling-box scene defined here.
 // Determinism across thread counts (STYLE 3.4, issue 5): the same input gives the same bits on
 // 1, 2 and 3 threads after 1000 steps. Forces are summed per particle in an order fixed by the
 // particles' blocks and the slot order (neighbor_list.h), so the schedule cannot change the order
