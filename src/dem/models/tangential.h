@@ -11,8 +11,9 @@
 //      the spring is reset to the cap, xi = -(Ft + etaT vt)/kt, so the dashpot sits inside the cap.
 //
 // With Hertz-Mindlin, kt = 8 G* sqrt(R* delta) changes with the overlap while xi is stored: the
-// force follows kt(delta) xi, so a shrinking overlap scales the stored force down with kt (the
-// rule LAMMPS calls `mindlin_rescale`; docs/models.md).
+// force follows kt(delta) xi: a displacement history (LAMMPS's `mindlin`), so a shrinking overlap
+// scales the stored force down with kt, the rescaling Thornton, Cummins & Cleary (2013) ask for
+// (docs/models.md).
 #pragma once
 
 #include "core/hot.h"
