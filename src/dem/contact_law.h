@@ -85,7 +85,7 @@ template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
 /// What the law reads beyond the linear normal and tangential model.
 struct ExtraInputs
 {
-    bool effectiveRadius, spinInertia, rollingInertia, angularVelocity;
+    bool effectiveRadius, spinInertia, rollingInertia;
 };
 inline ExtraInputs extraInputsFor(const PairParams& p)
 {
@@ -93,7 +93,7 @@ inline ExtraInputs extraInputsFor(const PairParams& p)
     return {p.normalModel == NormalModel::Hertz || rolling,
             p.rollingModel == RollingModel::ConstantTorque ||
                 p.rollingModel == RollingModel::ConstantTorqueAbsolute,
-            p.rollingModel == RollingModel::Epsd, rolling};
+            p.rollingModel == RollingModel::Epsd};
 }
 
 /// The pair parameters as the law reads them (one value per lane).
