@@ -10,6 +10,7 @@
 #include "core/vec3.h"
 #include "dem/lanes.h"
 #include "dem/materials.h"
+#include "dem/models/cohesion.h"
 #include "dem/models/normal.h"
 #include "dem/models/rolling.h"
 #include "dem/models/tangential.h"
@@ -45,20 +46,38 @@ template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairPara
             return f(LawModel<N, RollingModel::None>{});
         }
     };
-    if (p.normalModel == NormalModel::Hertz)
+    switch (p.normalModel)
+    {
+    case NormalModel::Hertz:
         return rolling.template operator()<NormalModel::Hertz>();
-    return rolling.template operator()<NormalModel::Linear>();
+    case NormalModel::Jkr:
+        return rolling.template operator()<NormalModel::Jkr>();
+    case NormalModel::Dmt:
+        return rolling.template operator()<NormalModel::Dmt>();
+    default:
+        return rolling.template operator()<NormalModel::Linear>();
+    }
 }
 
 /// The number of model combinations (LawModel) and each one's index: normal * 5 + rolling.
 inline constexpr unsigned kRollingModelCount = 5;
-inline constexpr unsigned kLawModels = 2 * kRollingModelCount;
+inline constexpr unsigned kNormalModelCount = 4;
+inline constexpr unsigned kLawModels = kNormalModelCount * kRollingModelCount;
 inline unsigned lawModelIndex(const PairParams& p)
 {
     return static_cast<unsigned>(p.normalModel) * kRollingModelCount + static_cast<unsigned>(p.rollingModel);
 }
-/// The lawModelIndex bits of the models with rolling resistance.
-inline constexpr unsigned kRollingModels = ((1u << kLawModels) - 1) & ~(1u | (1u << kRollingModelCount));
+/// The lawModelIndex bits of the models with rolling resistance, and of the JKR models (whose
+/// contacts carry a formed/not-formed state: their touch criterion has hysteresis).
+inline constexpr unsigned kRollingModels = []
+{
+    unsigned mask = 0;
+    for (unsigned n = 0; n < kNormalModelCount; ++n)
+        mask |= ((1u << kRollingModelCount) - 2) << (n * kRollingModelCount);
+    return mask;
+}();
+inline constexpr unsigned kJkrModels = ((1u << kRollingModelCount) - 1)
+                                       << (static_cast<unsigned>(NormalModel::Jkr) * kRollingModelCount);
 
 /// Calls f(LawModel<...>{}, index) for every model whose bit `index` is set in `mask`.
 template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
@@ -80,6 +99,8 @@ template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
     };
     forNormal.template operator()<N::Linear>(0);
     forNormal.template operator()<N::Hertz>(kRollingModelCount);
+    forNormal.template operator()<N::Jkr>(2 * kRollingModelCount);
+    forNormal.template operator()<N::Dmt>(3 * kRollingModelCount);
 }
 
 /// What the law reads beyond the linear normal and tangential model.
@@ -90,7 +111,7 @@ struct ExtraInputs
 inline ExtraInputs extraInputsFor(const PairParams& p)
 {
     const bool rolling = p.rollingModel != RollingModel::None;
-    return {p.normalModel == NormalModel::Hertz || rolling,
+    return {isHertzian(p.normalModel) || rolling,
             p.rollingModel == RollingModel::ConstantTorque ||
                 p.rollingModel == RollingModel::ConstantTorqueAbsolute,
             p.rollingModel == RollingModel::Epsd};
@@ -112,6 +133,7 @@ template <class T> struct LawParamsOf
     T rollingDamping; // EPSD etaR [-]
     T rollingTwist;   // 1: the rolling torque also opposes twist about the normal; 0: not [-]
     T rollingViscous; // type B c_r [s/m]
+    T adhesion;       // work of adhesion w [J/m^2] (JKR, DMT)
 };
 using LawParams = LawParamsOf<Real>;
 
@@ -123,14 +145,15 @@ inline LawParams lawParams(const PairParams& p)
             p.effectiveModulus,
             p.effectiveShearModulus,
             p.dampingRate,
-            p.normalModel == NormalModel::Hertz ? hertzDampingFactor(p.hertzBeta) : 2.0 * p.dampingRatio,
+            isHertzian(p.normalModel) ? hertzDampingFactor(p.hertzBeta) : 2.0 * p.dampingRatio,
             p.tangentialDampingRatio,
             p.mu,
             p.rollingLength,
             p.rollingDimensionless,
             p.rollingDampingRatio,
             p.rollingTwist ? 1.0 : 0.0,
-            p.rollingViscous};
+            p.rollingViscous,
+            p.workOfAdhesion};
 }
 
 /// Geometry and kinematics of one contact, as seen by particle i.
@@ -153,6 +176,7 @@ template <class T> struct ContactHistoryOf
 {
     lanes::Vec3Of<T> tangentialSpring{}; // xi [m]
     lanes::Vec3Of<T> rollingSpring{};    // EPSD elastic torque [N m]
+    T formed{}; // 1 while a JKR contact is formed, else 0 [-] (the law writes 1 for other models)
 };
 using ContactHistory = ContactHistoryOf<Real>;
 
@@ -188,9 +212,24 @@ template <class T> struct ContactCoefficientsOf
 };
 using ContactCoefficients = ContactCoefficientsOf<Real>;
 
+/// The contact radius a [m] of a Hertz-family contact at overlap delta [m] (Hertz and DMT:
+/// sqrt(R* delta); JKR: models/cohesion.h); unused by the linear model.
 template <class Model, class T>
-VERIDEM_HOT_INLINE ContactCoefficientsOf<T> contactCoefficientsOf(const LawParamsOf<T>& p, T overlap,
-                                                                  T effectiveMass, T effectiveRadius)
+VERIDEM_HOT_INLINE T contactRadiusOf(const LawParamsOf<T>& p, T overlap, T effectiveRadius)
+{
+    if constexpr (Model::normal == NormalModel::Linear)
+        return T{};
+    else if constexpr (Model::normal == NormalModel::Jkr)
+        return jkrContactRadius<T>(p.modulus, effectiveRadius, p.adhesion, overlap);
+    else
+        return lanes::laneSqrt(effectiveRadius * overlap);
+}
+
+/// The coefficients at contact radius a [m] (contactRadiusOf; Hertz-family models): kn = 2 E* a
+/// and kt = 8 G* a (Mindlin), the damping from them.
+template <class Model, class T>
+VERIDEM_HOT_INLINE ContactCoefficientsOf<T> contactCoefficientsAt(const LawParamsOf<T>& p, T contactRadius,
+                                                                  T effectiveMass)
 {
     using namespace lanes;
     ContactCoefficientsOf<T> c;
@@ -198,8 +237,7 @@ VERIDEM_HOT_INLINE ContactCoefficientsOf<T> contactCoefficientsOf(const LawParam
     c.etaN = p.dampingRate * effectiveMass;
     if constexpr (Model::normal == NormalModel::Linear)
     {
-        (void)overlap;
-        (void)effectiveRadius;
+        (void)contactRadius;
         c.kn = p.kn;
         c.kt = p.ktRatio * p.kn;
         if (!allLanes(fromRate)) // damping from restitution: 2 zeta sqrt(m* kn)
@@ -207,14 +245,21 @@ VERIDEM_HOT_INLINE ContactCoefficientsOf<T> contactCoefficientsOf(const LawParam
     }
     else
     {
-        const T root = laneSqrt(effectiveRadius * overlap);
-        c.kn = 2.0 * p.modulus * root;
-        c.kt = 8.0 * p.shearModulus * root;
+        c.kn = 2.0 * p.modulus * contactRadius;
+        c.kt = 8.0 * p.shearModulus * contactRadius;
         if (!allLanes(fromRate))
             c.etaN = fromRate ? c.etaN : p.dampingFactor * laneSqrt(c.kn * effectiveMass);
     }
     c.etaT = p.etaRatio * c.etaN;
     return c;
+}
+
+template <class Model, class T>
+VERIDEM_HOT_INLINE ContactCoefficientsOf<T> contactCoefficientsOf(const LawParamsOf<T>& p, T overlap,
+                                                                  T effectiveMass, T effectiveRadius)
+{
+    return contactCoefficientsAt<Model, T>(p, contactRadiusOf<Model, T>(p, overlap, effectiveRadius),
+                                           effectiveMass);
 }
 
 /// Coefficients of a pair (scalar: the time-step estimate, tests).
@@ -237,16 +282,30 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
     using namespace lanes;
     using V = Vec3Of<T>;
     const T zero{}, one = broadcast<T>(1.0);
-    const ContactCoefficientsOf<T> c =
-        contactCoefficientsOf<Model, T>(p, in.overlap, in.effectiveMass, in.effectiveRadius);
+    constexpr bool kAdhesive = isAdhesive(Model::normal);
+    const T contactRadius = contactRadiusOf<Model, T>(p, in.overlap, in.effectiveRadius);
+    const ContactCoefficientsOf<T> c = contactCoefficientsAt<Model, T>(p, contactRadius, in.effectiveMass);
+
+    // 0. The touch criterion: whether the contact is formed. Every model but JKR is formed exactly
+    // while delta > 0 (the force stage passes only those). A JKR contact forms at delta >= 0 and
+    // holds while delta > delta_c < 0 (the force stage passes contacts within its reach).
+    MaskOf<T> formed{};
+    if constexpr (Model::normal == NormalModel::Jkr)
+        formed = (in.overlap >= zero) |
+                 ((history.formed != zero) &
+                  (in.overlap > jkrBreakingOverlap<T>(p.modulus, in.effectiveRadius, p.adhesion)));
 
     // 1. Normal force.
     const T normalSpeed = dot(in.relativeVelocity, in.normal); // < 0 while approaching
     T elastic;
     if constexpr (Model::normal == NormalModel::Linear)
         elastic = c.kn * in.overlap;
-    else
+    else if constexpr (Model::normal == NormalModel::Hertz)
         elastic = hertzElasticForce<T>(p.modulus, in.effectiveRadius, in.overlap);
+    else if constexpr (Model::normal == NormalModel::Dmt)
+        elastic = dmtForce<T>(p.modulus, in.effectiveRadius, p.adhesion, in.overlap);
+    else
+        elastic = jkrForce<T>(p.modulus, in.effectiveRadius, p.adhesion, contactRadius);
     // Contact transitions. The dashpot force jumps to etaN |vn| at first touch and from it at
     // separation, so the force sampled at t+dt (which acts over the kick window
     // [t+dt/2, t+3dt/2]) would otherwise act for a full step whatever fraction of the window is
@@ -255,11 +314,15 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
     // contact, i.e. delta < |vn| dt, the dashpot is weighted by the contact time credited to this
     // window, 1/2 + delta/(|vn| dt) (derivation in docs/models.md). Its division runs only if a
     // lane needs it.
-    const T travel = laneAbs(normalSpeed) * dt;
-    const MaskOf<T> transition = in.overlap < travel;
+    // (Adhesive contacts form and break with a jump of the elastic force itself: no weighting.)
     T dashpotWeight = one;
-    if (anyLane(transition))
-        dashpotWeight = transition ? 0.5 + in.overlap / travel : one;
+    if constexpr (!kAdhesive)
+    {
+        const T travel = laneAbs(normalSpeed) * dt;
+        const MaskOf<T> transition = in.overlap < travel;
+        if (anyLane(transition))
+            dashpotWeight = transition ? 0.5 + in.overlap / travel : one;
+    }
     // The dashpot needs the normal speed at t+dt, but only the half-step speed is known. Solve
     // the pair's own final half kick for it, u = u_half + dt/2 (elastic - eta u)/m*, so that
     // the damping of an isolated contact is integrated to second order (other forces on the two
@@ -271,10 +334,17 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
         (in.effectiveMass * normalSpeed + halfStep * elastic) / (in.effectiveMass + halfStep * dampingWeight);
     const T normalForce = elastic - dampingWeight * normalSpeedEnd;
 
-    // 2. Tangential force, capped by mu * Fn.
+    // The load the friction and rolling caps take: Fn, or Fn + 2 F_pulloff with adhesion.
+    T load = normalForce;
+    if constexpr (Model::normal == NormalModel::Jkr)
+        load = normalForce + 2.0 * jkrPullOffForce<T>(in.effectiveRadius, p.adhesion);
+    else if constexpr (Model::normal == NormalModel::Dmt)
+        load = normalForce + 2.0 * dmtPullOffForce<T>(in.effectiveRadius, p.adhesion);
+
+    // 2. Tangential force, capped by mu * load.
     const V tangentialVelocity = in.relativeVelocity - normalSpeed * in.normal;
-    const TangentialResultOf<T> t = coulombSpring<T, kProjected>(
-        c.kt, c.etaT, p.mu, normalForce, history.tangentialSpring, in.normal, tangentialVelocity, dt);
+    TangentialResultOf<T> t = coulombSpring<T, kProjected>(c.kt, c.etaT, p.mu, load, history.tangentialSpring,
+                                                           in.normal, tangentialVelocity, dt);
     history.tangentialSpring = t.spring;
 
     // 3. Rolling resistance, capped by muR * Fn. It opposes the whole relative angular velocity
@@ -286,25 +356,37 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
         const V resisted = select(p.rollingTwist != zero, w, w - dot(w, in.normal) * in.normal);
         const T muR = p.rollingLength + p.rollingDimless * in.effectiveRadius;
         if constexpr (Model::rolling == RollingModel::ConstantTorque)
-            rollingTorque = constantRollingTorqueOf<T>(muR, normalForce, resisted, in.spinInertia, dt);
+            rollingTorque = constantRollingTorqueOf<T>(muR, load, resisted, in.spinInertia, dt);
         else if constexpr (Model::rolling == RollingModel::ConstantTorqueAbsolute)
-            rollingTorque =
-                constantRollingTorqueOf<T>(muR, normalForce, in.angularVelocity, in.spinInertia, dt);
+            rollingTorque = constantRollingTorqueOf<T>(muR, load, in.angularVelocity, in.spinInertia, dt);
         else if constexpr (Model::rolling == RollingModel::Viscous)
-            rollingTorque =
-                viscousRollingTorqueOf<T>(p.rollingViscous, in.effectiveRadius, normalForce, resisted);
+            rollingTorque = viscousRollingTorqueOf<T>(p.rollingViscous, in.effectiveRadius, load, resisted);
         else
         {
             const T kr = 2.25 * c.kn * muR * muR;
             const T cr = p.rollingDamping * 2.0 * laneSqrt(in.rollingInertia * kr);
             const RollingSpringResultOf<T> r =
-                epsdRollingTorqueOf<T>(kr, cr, muR, normalForce, history.rollingSpring, resisted, dt);
+                epsdRollingTorqueOf<T>(kr, cr, muR, load, history.rollingSpring, resisted, dt);
             history.rollingSpring = r.spring;
             rollingTorque = r.torque;
         }
     }
-    (void)zero;
-    return {normalForce * in.normal + t.force, t.force, rollingTorque, normalForce, t.sliding};
+    // A JKR contact that is not formed carries no force and forgets its history.
+    T force = normalForce;
+    history.formed = one;
+    if constexpr (Model::normal == NormalModel::Jkr)
+    {
+        history.formed = formed ? one : zero;
+        if (!allLanes(formed))
+        {
+            force = formed ? force : zero;
+            t.force = select(formed, t.force, V{});
+            rollingTorque = select(formed, rollingTorque, V{});
+            history.tangentialSpring = select(formed, history.tangentialSpring, V{});
+            history.rollingSpring = select(formed, history.rollingSpring, V{});
+        }
+    }
+    return {force * in.normal + t.force, t.force, rollingTorque, force, t.sliding};
 }
 
 /// The law for one contact of a pair with parameters p (the scalar path: width one).
@@ -313,6 +395,16 @@ VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const Cont
 {
     return withLawModel(p, [&](auto model) VERIDEM_INLINE_LAMBDA
                         { return contactLaw<decltype(model), Real>(lawParams(p), in, history, dt); });
+}
+
+/// The touch criterion's reach of a pair [m]: the largest separation (r_i + r_j minus the centre
+/// distance, negated) at which a contact of its model and effective radius R* [m] still acts: JKR
+/// |delta_c| (models/cohesion.h), 0 for every other model (they act only while delta > 0).
+inline Real touchReach(const PairParams& p, Real effectiveRadius)
+{
+    if (p.normalModel != NormalModel::Jkr || !(p.workOfAdhesion > 0))
+        return 0;
+    return -jkrBreakingOverlap<Real>(p.effectiveModulus, effectiveRadius, p.workOfAdhesion);
 }
 
 /// Rolling friction as a length [m] for a contact of rolling radius R_r [m].

@@ -180,17 +180,17 @@ struct LaneParams
 {
     alignas(64) double kn[kBatch], ktRatio[kBatch], modulus[kBatch], shearModulus[kBatch], rate[kBatch],
         factor[kBatch], etaRatio[kBatch], mu[kBatch], rollingLength[kBatch], rollingDimless[kBatch],
-        rollingDamping[kBatch], rollingTwist[kBatch], rollingViscous[kBatch];
+        rollingDamping[kBatch], rollingTwist[kBatch], rollingViscous[kBatch], adhesion[kBatch];
 
     /// The fields, in LawParams' order.
-    std::array<double*, 13> fields()
+    std::array<double*, 14> fields()
     {
-        return {kn, ktRatio,       modulus,        shearModulus,   rate,         factor,        etaRatio,
-                mu, rollingLength, rollingDimless, rollingDamping, rollingTwist, rollingViscous};
+        return {kn, ktRatio,       modulus,        shearModulus,   rate,         factor,         etaRatio,
+                mu, rollingLength, rollingDimless, rollingDamping, rollingTwist, rollingViscous, adhesion};
     }
     void set(std::size_t m, const LawParams& p)
     {
-        const std::array<double, 13> values{p.kn,
+        const std::array<double, 14> values{p.kn,
                                             p.ktRatio,
                                             p.modulus,
                                             p.shearModulus,
@@ -202,8 +202,9 @@ struct LaneParams
                                             p.rollingDimless,
                                             p.rollingDamping,
                                             p.rollingTwist,
-                                            p.rollingViscous};
-        const std::array<double*, 13> f = fields();
+                                            p.rollingViscous,
+                                            p.adhesion};
+        const std::array<double*, 14> f = fields();
         for (std::size_t k = 0; k < f.size(); ++k)
             f[k][m] = values[k];
     }
@@ -270,9 +271,11 @@ struct Candidates
     const PaddedVec3* positionRadius; // (x, y, z, r) per particle: position and radius in one row
     const std::uint8_t* mayBeActive;
     std::size_t end; // one past the chunk's last candidate
+    Real reach;      // NeighborList::reach [m]: a pair within r_i + r_j + reach is passed to the law
 };
 
 /// The selection pass from candidate a on: appends each touching one (a, i, j) to the batch at
+/// m ("touching": within r_i + r_j + reach, the models' touch criterion, see NeighborList::reach),
 /// m, and records at opened[o] each one found open that may have been in contact (its history is
 /// cleared by the caller). Stops at the chunk's end, when the batch or `opened` is full (kBatch),
 /// or at the first candidate of a new block (first particle >= zeroedEnd), whose sums the caller
@@ -287,6 +290,7 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
     const Vec3* const position = c.position;
     const Real* const radius = c.radius;
     const std::uint8_t* const mayBeActive = c.mayBeActive;
+    const Real reach = c.reach;
     const std::size_t end = c.end, last = c.end - 1;
     std::size_t touchingEnd = m, openedEnd = o;
     for (; a < end && touchingEnd < kBatch && openedEnd < kBatch; ++a)
@@ -301,7 +305,7 @@ VERIDEM_HOT_INLINE std::size_t selectTouchingScalar(const Candidates& c, std::si
         const Vec3 &xi = position[i], &xj = position[j];
         const Real ri = radius[i], rj = radius[j];
         const Real sx = xi.x - xj.x, sy = xi.y - xj.y, sz = xi.z - xj.z;
-        const Real touching = ri + rj;
+        const Real touching = ri + rj + reach;
         const bool isTouching = sx * sx + sy * sy + sz * sz < touching * touching;
         b.candidate[touchingEnd] = k;
         b.i[touchingEnd] = i;
@@ -341,7 +345,8 @@ VERIDEM_HOT_INLINE LawParamsOf<Lanes> laneLawParams(const LawParams* uniform, co
                 b(uniform->rollingDimless),
                 b(uniform->rollingDamping),
                 b(uniform->rollingTwist),
-                b(uniform->rollingViscous)};
+                b(uniform->rollingViscous),
+                b(uniform->adhesion)};
     }
     const auto l = [&](const double* a) VERIDEM_INLINE_LAMBDA { return load<Lanes>(a + m); };
     return {l(law.kn),
@@ -356,7 +361,8 @@ VERIDEM_HOT_INLINE LawParamsOf<Lanes> laneLawParams(const LawParams* uniform, co
             l(law.rollingDimless),
             l(law.rollingDamping),
             l(law.rollingTwist),
-            l(law.rollingViscous)};
+            l(law.rollingViscous),
+            l(law.adhesion)};
 }
 
 /// The law of a world with a single material pair: its parameters and model bit (no table look-up
@@ -382,10 +388,15 @@ struct LawBatch
         springY[kBatch], springZ[kBatch];
     alignas(32) double torqueX[kBatch], torqueY[kBatch], torqueZ[kBatch], rollingX[kBatch], rollingY[kBatch],
         rollingZ[kBatch];
+    // Whether each contact is formed (1) or not (0), before the law (read if `formedKnown`, else
+    // taken as 0) and after it (written if `jkr`): the state of the JKR touch criterion.
+    alignas(32) double formed[kBatch];
     std::uint32_t slot[kBatch], particle[kBatch];
     std::uint8_t model[kBatch]; // lawModelIndex of each contact's pair
     unsigned models = 0;        // bit lawModelIndex set for every model in the batch
     bool rolling = false;       // some model of the batch has rolling resistance
+    bool jkr = false;           // some model of the batch is JKR (kJkrModels)
+    bool formedKnown = false;   // `formed` holds the contacts' states (pairs; walls keep none)
 
     /// Contact m's inputs: its slot and particle, unit normal, overlap [m], relative contact
     /// velocity [m/s], effective mass [kg] and stored spring [m].
@@ -434,10 +445,10 @@ struct LawBatch
         return rolling ? Vec3{rollingX[q], rollingY[q], rollingZ[q]} : Vec3{};
     }
     /// The arrays of the inputs (padding lanes repeat the last contact).
-    std::array<double*, 23> inputs()
+    std::array<double*, 24> inputs()
     {
-        return {nx, ny,     nz,          overlap,        rvx, rvy, rvz, mass, hx, hy, hz, wx, wy,
-                wz, radius, spinInertia, rollingInertia, rx,  ry,  rz,  ox,   oy, oz};
+        return {nx, ny,     nz,          overlap,        rvx, rvy, rvz, mass, hx, hy, hz,    wx, wy,
+                wz, radius, spinInertia, rollingInertia, rx,  ry,  rz,  ox,   oy, oz, formed};
     }
 };
 
@@ -459,8 +470,11 @@ VERIDEM_HOT_INLINE void lawLanesWith(LawBatch& b, std::size_t padded, Real dt, c
         in.effectiveMass = l(b.mass);
         ContactHistoryOf<Lanes> h;
         h.tangentialSpring = {l(b.hx), l(b.hy), l(b.hz)};
-        if constexpr (kRolling || Model::normal == NormalModel::Hertz)
+        if constexpr (kRolling || isHertzian(Model::normal))
             in.effectiveRadius = l(b.radius);
+        if constexpr (Model::normal == NormalModel::Jkr)
+            if (b.formedKnown)
+                h.formed = l(b.formed);
         if constexpr (kRolling)
         {
             in.relativeAngularVelocity = {l(b.wx), l(b.wy), l(b.wz)};
@@ -491,6 +505,8 @@ VERIDEM_HOT_INLINE void lawLanesWith(LawBatch& b, std::size_t padded, Real dt, c
         put(b.springX, h.tangentialSpring.x);
         put(b.springY, h.tangentialSpring.y);
         put(b.springZ, h.tangentialSpring.z);
+        if (b.jkr)
+            put(b.formed, h.formed);
         if (b.rolling)
         {
             put(b.torqueX, out.rollingTorque.x);
@@ -574,6 +590,7 @@ VERIDEM_HOT_INLINE void setBatchLaws(LawBatch& b, std::size_t padded, const Unif
         }
     }
     b.rolling = (b.models & kRollingModels) != 0;
+    b.jkr = (b.models & kJkrModels) != 0;
 }
 
 /// Contact m's law, if the world has more than one pair: its pair's parameters and model.
@@ -592,6 +609,7 @@ VERIDEM_HOT_INLINE void finishBatchLaws(LawBatch& b, const UniformLaw* uniform)
     if (uniform)
         b.models = uniform->models;
     b.rolling = (b.models & kRollingModels) != 0;
+    b.jkr = (b.models & kJkrModels) != 0;
 }
 
 /// The inputs beyond the linear law's of the pair contacts [0, padded) of `b` (R*, the inertias,
@@ -754,6 +772,12 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         store(minRadii + m, rj < ri ? rj : ri);
     }
 
+    // The JKR touch criterion's state: formed or not at the previous step.
+    law.formedKnown = law.jkr;
+    if (law.jkr)
+        for (std::size_t m = 0; m < padded; ++m)
+            law.formed[m] = sink.mayBeActive[b.candidate[m]];
+
     // 2. The law (lawLanes, as the wall contacts').
     // (In its own function, as the walls': inlined, its register pressure spills the other passes.)
     if constexpr (kWidth<Lanes> == 4)
@@ -821,6 +845,9 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         scatter.template operator()<true>();
     else
         scatter.template operator()<false>();
+    if (law.jkr) // (scatterContact marked every contact formed)
+        for (std::size_t q = 0; q < count; ++q)
+            sink.mayBeActive[b.candidate[q]] = law.formed[q] != 0;
 }
 
 VERIDEM_AVX2_TARGET void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
@@ -892,6 +919,7 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
     const PaddedVec3* const positionRadius = c.positionRadius;
     const std::uint8_t* const mayBeActive = c.mayBeActive;
     const std::size_t end = c.end;
+    const Lanes4 reach = broadcast<Lanes4>(c.reach);
     std::size_t touchingEnd = m, openedEnd = o;
     for (; a + 4 <= end && touchingEnd + 4 <= kBatch && openedEnd + 4 <= kBatch; a += 4)
     {
@@ -921,7 +949,7 @@ VERIDEM_AVX2_TARGET std::size_t selectTouchingAvx2(const Candidates& c, std::siz
         const std::array<Lanes4, 4> rowI = rowLanes(laneI), rowJ = rowLanes(laneJ);
         const Lanes4 sx = rowI[0] - rowJ[0], sy = rowI[1] - rowJ[1], sz = rowI[2] - rowJ[2];
         const Lanes4 ri = rowI[3], rj = rowJ[3];
-        const Lanes4 touching = ri + rj;
+        const Lanes4 touching = ri + rj + reach;
         const Lanes4 distance2 = sx * sx + sy * sy + sz * sz;
         const unsigned touchingLanes = static_cast<unsigned>(
             _mm256_movemask_pd(reinterpret_cast<__m256d>(distance2 < touching * touching)));
@@ -1022,7 +1050,6 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
 {
     const ParticleStore& p = world.particles;
     const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
-    sink.mayBeActive[k] = 1;
     const Vec3 separation = p.position[i] - p.position[j];
     const Real ri = p.radius[i], rj = p.radius[j];
     const Real touching = ri + rj;
@@ -1053,8 +1080,10 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
                                    1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
 
     ContactHistory history = list.candidateHistory(k);
+    history.formed = sink.mayBeActive[k];
     const ContactOutput out = evaluateContact(params, in, history, dt);
     list.setCandidateHistory(k, history);
+    sink.mayBeActive[k] = history.formed != 0;
 
     const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
     sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,
@@ -1238,7 +1267,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
                 const std::uint32_t i = first[a], j = second[a];
                 if (i >= zeroedEnd)
                     zeroedEnd = zeroSums(sink, sumsAreZero, zeroedEnd, blockEndOf(i));
-                const Real touching = radius[i] + radius[j];
+                const Real touching = radius[i] + radius[j] + list.reach;
                 if (lengthSquared(position[i] - position[j]) < touching * touching)
                 {
                     pairContactScalar(world, list, sink, dt, a, worst);
@@ -1255,7 +1284,8 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
         // are zeroed here, and candidates found open are only recorded, then opened here
         // (openCandidate touches no candidate of the batch, and nothing in this pass reads what
         // it writes again).
-        const Candidates selection{first, second, position, radius, positionRadiusRows, mayBeActive, end};
+        const Candidates selection{first,       second, position,  radius, positionRadiusRows,
+                                   mayBeActive, end,    list.reach};
         PairBatch batch;
         std::uint32_t opened[kBatch];
         std::size_t m = 0, o = 0;

@@ -70,6 +70,20 @@ template <class V> VERIDEM_HOT_INLINE V laneSqrt(V x)
     return r;
 }
 
+/// Cube root, as std::cbrt, lane by lane (the same library call per lane, so the same bits at
+/// every width; only the cohesion models use it).
+VERIDEM_HOT_INLINE double laneCbrt(double x)
+{
+    return std::cbrt(x);
+}
+template <class V> VERIDEM_HOT_INLINE V laneCbrt(V x)
+{
+    V r;
+    for (std::size_t l = 0; l < kWidth<V>; ++l)
+        r[l] = std::cbrt(x[l]);
+    return r;
+}
+
 /// |x|, lane by lane (clears the sign bit, as std::fabs).
 VERIDEM_HOT_INLINE double laneAbs(double x)
 {

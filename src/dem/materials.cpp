@@ -48,10 +48,14 @@ void validateMaterial(const Material& m)
     else
     {
         if (!(m.youngsModulus > 0))
-            bad(m, "Young's modulus must be > 0 Pa for the Hertz model");
+            bad(m, "Young's modulus must be > 0 Pa for the Hertz, JKR and DMT models");
         if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
             bad(m, "Poisson's ratio must be in (-1, 0.5)");
     }
+    if (!(m.surfaceEnergy >= 0) || !std::isfinite(m.surfaceEnergy))
+        bad(m, "surface energy must be finite and >= 0 J/m^2");
+    if (m.surfaceEnergy > 0 && !isAdhesive(m.normalModel))
+        bad(m, "surface energy is read only by the \"jkr\" and \"dmt\" models");
 }
 
 PairParams mixMaterials(const Material& a, const Material& b)
@@ -63,13 +67,14 @@ PairParams mixMaterials(const Material& a, const Material& b)
     p.normalModel = a.normalModel;
     p.kn = seriesStiffness(a.normalStiffness, b.normalStiffness);
     p.ktRatio = 0.5 * (a.tangentialStiffnessRatio + b.tangentialStiffnessRatio);
-    if (p.normalModel == NormalModel::Hertz)
+    if (isHertzian(p.normalModel))
     {
         p.effectiveModulus = 1.0 / ((1 - a.poissonRatio * a.poissonRatio) / a.youngsModulus +
                                     (1 - b.poissonRatio * b.poissonRatio) / b.youngsModulus);
         const Real ga = a.youngsModulus / (2 * (1 + a.poissonRatio));
         const Real gb = b.youngsModulus / (2 * (1 + b.poissonRatio));
         p.effectiveShearModulus = 1.0 / ((2 - a.poissonRatio) / ga + (2 - b.poissonRatio) / gb);
+        p.workOfAdhesion = 2.0 * std::sqrt(a.surfaceEnergy * b.surfaceEnergy);
     }
     const Real e = 0.5 * (a.restitution + b.restitution);
     p.dampingRatio = dampingRatioFromRestitution(e);

@@ -5,6 +5,8 @@
 //   linear stiffness kn, kt: series springs, k = 2 k1 k2 / (k1 + k2)  (= k for equal materials)
 //   Hertz: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2,  1/G* = (2-nu1)/G1 + (2-nu2)/G2
 //   restitution e, friction mu, rolling friction: arithmetic mean (a [[pair]] scene entry overrides)
+//   work of adhesion: w = 2 sqrt(gamma1 gamma2) (= 2 gamma for like surfaces; the geometric-mean
+//   combining rule of Girifalco & Good 1957, Israelachvili, Intermolecular and Surface Forces)
 #pragma once
 
 #include "core/vec3.h"
@@ -20,8 +22,21 @@ namespace veridem::dem
 enum class NormalModel
 {
     Linear, // linear spring-dashpot
-    Hertz   // Hertz-Mindlin with restitution damping
+    Hertz,  // Hertz-Mindlin with restitution damping
+    Jkr,    // Hertz-Mindlin elasticity with JKR adhesion (models/cohesion.h; needs surfaceEnergy)
+    Dmt     // Hertz-Mindlin elasticity with DMT adhesion (models/cohesion.h)
 };
+
+/// True for the models whose contacts pull (JKR, DMT).
+constexpr bool isAdhesive(NormalModel m)
+{
+    return m == NormalModel::Jkr || m == NormalModel::Dmt;
+}
+/// True for the models built on Hertz elasticity (they read E*, G* and R*).
+constexpr bool isHertzian(NormalModel m)
+{
+    return m != NormalModel::Linear;
+}
 
 enum class RollingModel
 {
@@ -40,9 +55,10 @@ struct Material
     // Linear model
     Real normalStiffness = 1e5;                // kn [N/m]
     Real tangentialStiffnessRatio = 2.0 / 7.0; // kt/kn [-] (2/7: equal normal and tangential periods)
-    // Hertz model
+    // Hertz, JKR and DMT models
     Real youngsModulus = 0; // E [Pa]
     Real poissonRatio = 0;  // nu [-]
+    Real surfaceEnergy = 0; // gamma [J/m^2] (JKR, DMT): work of adhesion w = 2 gamma for like surfaces
     // Damping
     Real restitution = 0.8; // e in (0, 1]
     Real normalDampingRate =
@@ -73,6 +89,7 @@ struct PairParams
     Real ktRatio = 0;                // kt/kn [-] (linear and Hertz: kt = ratio * kn for linear)
     Real effectiveModulus = 0;       // E* [Pa] (Hertz)
     Real effectiveShearModulus = 0;  // G* [Pa] (Hertz-Mindlin kt = 8 G* sqrt(R* delta))
+    Real workOfAdhesion = 0;         // w [J/m^2] (JKR, DMT): 2 sqrt(gamma_a gamma_b)
     Real dampingRatio = 0;           // zeta from e (linear) [-]
     Real hertzBeta = 0;              // beta from e (Hertz) [-]
     Real dampingRate = -1;           // gamma_n [1/s] if >= 0

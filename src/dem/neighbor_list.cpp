@@ -102,13 +102,14 @@ void NeighborList::selectCandidates(const ParticleStore& particles)
     // sized exactly (push_back would over-allocate up to twice over, and they are never shrunk).
     const Vec3* const x = particles.position.data();
     const Real* const r = particles.radius.data();
+    const Real innerSkinReach = innerSkin + reach; // beyond r_i + r_j [m]
     resizeExactly(within_, first.size());
     std::size_t count = 0;
     for (std::size_t k = 0; k < first.size(); ++k)
     {
         const std::uint32_t i = first[k], j = second[k];
-        const Real reach = r[i] + r[j] + innerSkin;
-        within_[k] = lengthSquared(x[i] - x[j]) < reach * reach;
+        const Real within = r[i] + r[j] + innerSkinReach;
+        within_[k] = lengthSquared(x[i] - x[j]) < within * within;
         count += within_[k];
     }
     // The old sub-list's slots move to oldSlots_ (slot-to-slot matching reads them).
@@ -260,7 +261,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
         hi = {std::fmax(hi.x, x.x), std::fmax(hi.y, x.y), std::fmax(hi.z, x.z)};
         maxRadius = std::fmax(maxRadius, particles.radius[i]);
     }
-    Real cell = std::fmax(2 * maxRadius + skin, 1e-12);
+    const Real search = skin + reach; // beyond r_i + r_j [m]
+    Real cell = std::fmax(2 * maxRadius + search, 1e-12);
     // Cell counts in floating point, converted only once bounded: a blown-up state (huge or
     // non-finite positions, stopped by the caller's health check) must neither hang this loop
     // nor overflow a float-to-integer conversion. A box that is not finite gets one cell.
@@ -325,8 +327,8 @@ void NeighborList::rebuild(const ParticleStore& particles)
                             const std::uint32_t j = cellParticles_[k];
                             if (j <= i)
                                 continue;
-                            const Real reach = ri + particles.radius[j] + skin;
-                            if (lengthSquared(xi - particles.position[j]) < reach * reach)
+                            const Real within = ri + particles.radius[j] + search;
+                            if (lengthSquared(xi - particles.position[j]) < within * within)
                                 scratch.push_back(j);
                         }
                     }

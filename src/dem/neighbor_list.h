@@ -38,7 +38,12 @@ namespace veridem::dem
 class NeighborList
 {
   public:
-    Real skin = 0;                   // extra search distance beyond touching [m]
+    Real skin = 0; // extra search distance beyond touching [m]
+    // The touch criterion's reach [m]: the largest separation r_i + r_j - |x_i - x_j| at which a
+    // contact of some pair's model can still act (a JKR contact holds to |delta_c|, cohesion.h; 0
+    // for every other model). Pairs within r_i + r_j + reach are passed to the contact law, which
+    // decides whether they are formed, and the lists search that much farther.
+    Real reach = 0;
     bool keepRollingHistory = false; // store a rolling spring per slot (EPSD rolling model in use)
 
     std::vector<std::uint32_t> first;  // i of each pair (sorted, i < j)
@@ -78,8 +83,9 @@ class NeighborList
     std::vector<std::uint32_t> activeSlots;
     // Per candidate a (slot activeSlots[a]), what the force loop reads and writes, in sequence
     // instead of scattered over all slots: first[] and second[]; the contact history (tangential
-    // spring [m], rolling spring [N m] only if keepRollingHistory, and whether it may be non-zero, 0
-    // or 1 (the selection pass reads four flags as bits): cleared when the contact is found open,
+    // spring [m], rolling spring [N m] only if keepRollingHistory, and whether the contact is formed
+    // (so its history may be non-zero), 0 or 1 (the selection pass reads four flags as bits; for a
+    // JKR pair it is the state of the touch criterion's hysteresis): cleared when it is found open,
     // so an open candidate is written once, not every step; m* = m_i m_j / (m_i + m_j) [kg] (the contact
     // law's expression, so the same bits); the slot's deferredIndex.
     std::vector<std::uint32_t> activeFirst, activeSecond;

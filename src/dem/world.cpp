@@ -20,6 +20,7 @@
 #include "dem/world.h"
 
 #include "core/error.h"
+#include "dem/contact_law.h"
 #include "dem/forces.h"
 #include "dem/integrate.h"
 #include "dem/lanes.h"
@@ -326,6 +327,39 @@ Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes
     return next;
 }
 
+/// NeighborList::reach: the largest touch reach of a pair of the world's particles (R* at most
+/// r_max / 2). Refuses JKR adhesion between a particle and a wall, whose contacts keep no formed
+/// state (WallContactList).
+Real pairTouchReach(const World& world)
+{
+    const ParticleStore& p = world.particles;
+    std::vector<bool> present(world.materials.size(), false);
+    Real maxRadius = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        present[p.material[i]] = true;
+        maxRadius = std::max(maxRadius, p.radius[i]);
+    }
+    Real reach = 0;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+    {
+        if (!present[a])
+            continue;
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            if (present[b])
+                reach = std::max(reach, touchReach(world.pairs(a, b), 0.5 * maxRadius));
+        for (std::size_t w = 0; w < world.walls.size(); ++w)
+            if (touchReach(world.pairs(a, world.walls[w].material), maxRadius) > 0)
+                throw InputError(
+                    "wall " +
+                    (world.walls[w].name.empty() ? std::to_string(w) : "'" + world.walls[w].name + "'") +
+                    " and material '" + world.materials[a].name +
+                    "': JKR adhesion between a particle and a wall is not supported; give the "
+                    "wall a material with surface_energy = 0 (or use \"dmt\")");
+    }
+    return reach;
+}
+
 } // namespace
 
 void prepare(World& world)
@@ -350,6 +384,7 @@ void prepare(World& world)
             rollingHistory = rollingHistory || world.pairs(a, b).rollingModel == RollingModel::Epsd;
     world.neighbors.keepRollingHistory = rollingHistory;
     world.wallContacts.keepRollingHistory = rollingHistory;
+    world.neighbors.reach = pairTouchReach(world);
     rebuildContactLists(world);
     world.particles.refreshPositionRadius();
     world.prepared = true;

@@ -27,8 +27,11 @@ dem::Material readMaterial(TableReader& t)
     m.name = t.requiredString("name");
     m.density = t.requiredNumber("density");
     t.requirePositive("density", m.density, "kg/m^3");
-    const std::string model = t.choice("model", "linear", {"linear", "hertz"});
-    m.normalModel = model == "linear" ? dem::NormalModel::Linear : dem::NormalModel::Hertz;
+    const std::string model = t.choice("model", "linear", {"linear", "hertz", "jkr", "dmt"});
+    m.normalModel = model == "linear"  ? dem::NormalModel::Linear
+                    : model == "hertz" ? dem::NormalModel::Hertz
+                    : model == "jkr"   ? dem::NormalModel::Jkr
+                                       : dem::NormalModel::Dmt;
     if (m.normalModel == dem::NormalModel::Linear)
     {
         m.normalStiffness = t.requiredNumber("kn");
@@ -43,6 +46,11 @@ dem::Material readMaterial(TableReader& t)
         m.poissonRatio = t.requiredNumber("poisson_ratio");
         if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
             t.fail("poisson_ratio", "must be in (-1, 0.5)");
+        if (dem::isAdhesive(m.normalModel))
+        {
+            m.surfaceEnergy = t.requiredNumber("surface_energy");
+            t.requireNonNegative("surface_energy", m.surfaceEnergy, "J/m^2");
+        }
     }
     m.restitution = t.number("restitution", 0.8);
     if (!(m.restitution > 0 && m.restitution <= 1))

@@ -420,17 +420,19 @@ World modelBox(const std::vector<Material>& materials, bool dish)
     floor.motion.velocity = {0.02, -0.01, 0};
     floor.motion.angularVelocity = {0, 0, 40};
     floor.motion.rotationCentre = {0.5 * box, 0.5 * box, 0};
-    floor.material = static_cast<std::uint32_t>(materials.size() - 1);
     if (dish)
     {
         Wall bowl;
         bowl.shape = DishShape{{0.5 * box, 0.5 * box, -0.02e-3}, 0.3}; // below the floor's centre
         world.walls.push_back(bowl);
     }
+    for (Wall& wall : world.walls) // (the last material: see EveryModelInLanesMatchesScalarPath)
+        wall.material = static_cast<std::uint32_t>(materials.size() - 1);
     return world;
 }
 
-Material modelMaterial(const std::string& name, NormalModel normal, RollingModel rolling)
+Material modelMaterial(const std::string& name, NormalModel normal, RollingModel rolling,
+                       Real surfaceEnergy = 0)
 {
     Material m;
     m.name = name;
@@ -438,10 +440,13 @@ Material modelMaterial(const std::string& name, NormalModel normal, RollingModel
     m.restitution = 0.6; // damping from restitution (not a damping rate)
     m.friction = 0.4;
     m.normalModel = normal;
-    if (normal == NormalModel::Hertz)
+    if (isHertzian(normal))
     {
         m.youngsModulus = 1e7;
         m.poissonRatio = 0.3;
+        // [J/m^2] (JKR, DMT). 1 J/m^2 makes |delta_c| ~ 6 um, more than a step's travel at the box's
+        // speeds, so separating JKR contacts pass through the formed, pulling state.
+        m.surfaceEnergy = surfaceEnergy;
     }
     m.rollingModel = rolling;
     if (rolling == RollingModel::ConstantTorque || rolling == RollingModel::ConstantTorqueAbsolute)
@@ -471,7 +476,13 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
          modelMaterial("c", N::Linear, R::ConstantTorque), modelMaterial("d", N::Linear, R::Viscous),
          modelMaterial("e", N::Linear, R::ConstantTorqueAbsolute)},
         {modelMaterial("f", N::Hertz, R::None), modelMaterial("g", N::Hertz, R::Epsd),
-         modelMaterial("h", N::Hertz, R::Viscous)}};
+         modelMaterial("h", N::Hertz, R::Viscous)},
+        // Adhesion. The last material is the floor's: a JKR wall must not pull (no formed state
+        // is kept for wall contacts), so its surface energy is 0 there; DMT walls pull.
+        {modelMaterial("jkrA", N::Jkr, R::ConstantTorque, 1.0), modelMaterial("jkrWall", N::Jkr, R::None)},
+        {modelMaterial("jkr", N::Jkr, R::None, 1.0), modelMaterial("jkrEpsd", N::Jkr, R::Epsd, 0.5),
+         modelMaterial("jkrWall", N::Jkr, R::Viscous)},
+        {modelMaterial("dmtEpsd", N::Dmt, R::Epsd, 1.0), modelMaterial("dmt", N::Dmt, R::None, 1.0)}};
     const std::string initial = laneKernelName();
     for (std::size_t c = 0; c < cases.size(); ++c)
         for (bool dish : {false, true})
@@ -502,6 +513,8 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
                 EXPECT_TRUE(sameBits(batched.neighbors.activeSpring, scalar.neighbors.activeSpring)) << what;
                 EXPECT_TRUE(sameBits(batched.neighbors.activeRolling, scalar.neighbors.activeRolling))
                     << what;
+                EXPECT_TRUE(sameBits(batched.neighbors.activeMayBeActive, scalar.neighbors.activeMayBeActive))
+                    << what; // (the JKR formed states)
                 EXPECT_TRUE(
                     sameBits(batched.wallContacts.tangentialSpring, scalar.wallContacts.tangentialSpring))
                     << what;
