@@ -22,7 +22,7 @@ editing this script):
   sliding_block*.csv with a column v and L_* columns   Fig. 1, stop distance vs initial velocity
   chung_ooi_t*/<material>_sweep|_force|_restitution.csv  Chung & Ooi's figures over the rigid lines
   convergence_*/orders.csv     log-log error against dt, with the expected slope
-  rolling_turntable*/*_orbit.csv   orbit radius against time, relative and absolute frames
+  rolling_turntable*/frames.csv   orbit radius and spin against time, relative and absolute frames
 
 Only the Python standard library, numpy and matplotlib (Debian python3-matplotlib, Agg backend).
 """

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Smoke test of scripts/report.py on synthetic results: every kind of series it knows (turntable
 trajectory, dish trajectory and final heights, many-ball paths, sliding block, Chung & Ooi sweeps,
-force curves and restitution, convergence orders) and one it does not
+force curves and restitution, convergence orders, rolling frames) and one it does not
 know must give a figure, and index.html must list every case and quantity."""
 import json
 import math
@@ -43,13 +43,19 @@ with tempfile.TemporaryDirectory() as out:
     series("chung_ooi_t3", "al_oxide_restitution", ["e_in", "e_out", "e_identity"], [[0.5, 0.5, 0.5], [1, 1, 1]])
     series("convergence_orders", "orders", ["study", "dt_over_tc", "error", "error_expected_slope"],
            [[0, 0.04, 4e-4, 4e-4], [0, 0.02, 1e-4, 1e-4], [0, 0.01, 2.5e-5, 2.5e-5]])
+    series("rolling_turntable_frames", "frames",
+           ["t", "rho_relative", "rho_relative_theory", "rho_absolute", "rho_absolute_theory", "spin_relative",
+            "spin_absolute", "spin_absolute_theory"],
+           [[s, 0.006 + 6e-4 * s, 0.006 + 6e-4 * s, 0.006 + 4e-4 * s, 0.006 + 4e-4 * s, 10, 10 - s, 10 - s]
+            for s in t[:100]])
     series("something_new", "energy", ["t", "kinetic", "potential"], [[s, s, 1 - s] for s in t])
     quantity = {"name": "q", "unit": "m", "expected": 1.0, "measured": 1.0, "tolerance": 0.01, "relative": True,
                 "error": 0.0, "passed": True, "why": "because"}
-    cases = [{"name": n, "summary": "s", "reference": "r", "passed": True, "seconds": 0.1, "notes": ["a note"],
+    notes = ["a note"]
+    cases = [{"name": n, "summary": "s", "reference": "r", "passed": True, "seconds": 0.1, "notes": notes,
               "quantities": [quantity]}
              for n in ("turntable_t2_tilted", "dish_omega_0p9", "liquid_reflections", "sliding_block_stop",
-                       "something_new", "chung_ooi_t4", "chung_ooi_t1", "chung_ooi_t3", "convergence_orders")]
+                       "something_new", "rolling_turntable_frames", "chung_ooi_t4", "chung_ooi_t1", "chung_ooi_t3", "convergence_orders")]
     cases.append({"name": "broken", "summary": "s", "reference": "r", "passed": False, "seconds": 0,
                   "error": "it threw", "notes": [], "quantities": []})
     json_path = os.path.join(data, "results.json")
@@ -64,6 +70,7 @@ with tempfile.TemporaryDirectory() as out:
     for expected in ("turntable_t2_tilted_trajectory.png", "dish_omega_0p9_xy.png", "fig12_height_vs_omega.png",
                      "liquid_reflections_trajectories_dish_frame.png",
                      "sliding_block_stop_sliding_block.png", "something_new_energy.png", "chung_ooi_t4_sweep.png",
-                     "chung_ooi_t1_force.png", "chung_ooi_t3_restitution.png", "convergence_orders_orders.png"):
+                     "chung_ooi_t1_force.png", "chung_ooi_t3_restitution.png", "convergence_orders_orders.png",
+                     "rolling_turntable_frames_radius.png"):
         assert expected in figures, (expected, sorted(figures))
 print("report smoke test: OK")
