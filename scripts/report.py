@@ -22,6 +22,8 @@ editing this script):
   sliding_block*.csv with a column v and L_* columns   Fig. 1, stop distance vs initial velocity
   chung_ooi_t*/<material>_sweep|_force|_restitution.csv  Chung & Ooi's figures over the rigid lines
   convergence_*/orders.csv     log-log error against dt, with the expected slope
+  */dt_sweep.csv               a case's dt sweep (verification/sweep.h): successive differences
+                               against dt, one log-log figure per family
   rolling_turntable*/frames.csv   orbit radius and spin against time, relative and absolute frames
 
 Only the Python standard library, numpy and matplotlib (Debian python3-matplotlib, Agg backend).
@@ -39,8 +41,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from report_families import (CHUNG_OOI_PANELS, chung_ooi_force_figure, chung_ooi_restitution_figure,  # noqa: E402
-                             chung_ooi_sweep_figure, convergence_figure, family_of, rolling_frames_figure)
+from report_families import (CHUNG_OOI_PANELS, FAMILIES, chung_ooi_force_figure,  # noqa: E402
+                             chung_ooi_restitution_figure, chung_ooi_sweep_figure, convergence_figure,
+                             dt_sweep_figure, family_of, rolling_frames_figure)
 from report_html import write_html  # noqa: E402
 from report_util import column, read_series, save  # noqa: E402
 
@@ -416,6 +419,17 @@ def main():
             if path:
                 figures.append(("rolling", "", case, path))
                 used.update((case, n) for n in series[case])
+
+    # The dt sweeps of the collision, friction and rolling cases, one figure per family, in the
+    # convergence section.
+    for key, title, _, _ in FAMILIES:
+        sweeps = {c: (*s["dt_sweep"], notes_of.get(c, [])) for c, s in series.items()
+                  if "dt_sweep" in s and family_of(c) == key}
+        if sweeps:
+            path = dt_sweep_figure(out_dir, key, title, sweeps)
+            if path:
+                figures.append(("convergence", "dt sweeps of the cases (dt, dt/2, dt/4)", title, path))
+        used.update((c, "dt_sweep") for c in sweeps)
 
     # Everything else: many-ball paths, generic plots.
     for case in sorted(series):

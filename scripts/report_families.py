@@ -198,3 +198,67 @@ def rolling_frames_figure(out_dir, case, named):
     fig.tight_layout()
     return save(fig, out_dir, f"{case}_radius")
 
+
+def sweep_orders(header, data, notes):
+    """A case's dt sweep as rows (label, observed order, expected order or None), from its notes
+    ("dt sweep K, NAME: differences d1, d2: order p") and its dt_sweep series (the expected slope
+    column is finite for the checked quantities)."""
+    names = {}
+    for note in notes:
+        m = re.match(r"dt sweep (\d+), (.*?): differences ([^,]+), ([^:]+): order", note)
+        if m:
+            names[int(m.group(1))] = m.group(2)
+    index, diff = column(header, data, "quantity"), column(header, data, "difference")
+    ref = column(header, data, "difference_expected_slope")
+    rows = []
+    if index is None or diff is None:
+        return rows
+    for i in sorted(set(index.astype(int))):
+        d = diff[index == i]
+        r = ref[index == i] if ref is not None else np.array([np.nan, np.nan])
+        if len(d) < 2 or d[1] <= 0:
+            continue
+        observed = float(np.log2(d[0] / d[1]))
+        expected = float(np.log2(r[0] / r[1])) if np.all(np.isfinite(r)) and r[1] > 0 else None
+        rows.append((names.get(i, f"quantity {i}"), observed, expected))
+    return rows
+
+
+def dt_sweep_figure(out_dir, family, title, sweeps, margin=0.3):
+    """One family's dt sweeps: the observed order p = log2(|q(dt) - q(dt/2)| / |q(dt/2) - q(dt/4)|)
+    of every quantity (filled: checked against the scheme's order, the bar marking p_expected - margin
+    and p_expected; open: printed only), grouped by case."""
+    rows = []
+    for case, (header, data, notes) in sorted(sweeps.items()):
+        for label, observed, expected in sweep_orders(header, data, notes):
+            rows.append((f"{case.replace('chung_ooi_', 'C&O ')}: {label}", observed, expected))
+    if not rows:
+        return None
+    fig, ax = plt.subplots(figsize=(11, 1.2 + 0.27 * len(rows)))
+    y = np.arange(len(rows))[::-1]
+    for k, (label, observed, expected) in zip(y, rows):
+        shown = min(max(observed, -1.0), 5.0)
+        if expected is not None:
+            ax.plot([expected - margin, expected], [k, k], "-", color="0.6", lw=6, solid_capstyle="butt")
+            ax.plot([expected], [k], "|", color="k", ms=12, mew=2)
+            ok = observed >= expected - margin
+            ax.plot([shown], [k], "o", color="tab:green" if ok else "tab:red", ms=7)
+        else:
+            ax.plot([shown], [k], "o", mfc="none", color="tab:blue", ms=7)
+        if shown != observed:
+            ax.annotate(f"{observed:.1f}", (shown, k), textcoords="offset points", xytext=(6, -3), fontsize=7)
+    ax.set_yticks(y)
+    ax.set_yticklabels([r[0][:95] for r in rows], fontsize=7)
+    ax.set_xlim(-1.2, 5.2)
+    ax.set_ylim(-0.8, len(rows) - 0.2)
+    ax.axvline(1, color="0.85", lw=0.8, zorder=0)
+    ax.axvline(2, color="0.85", lw=0.8, zorder=0)
+    ax.set_xlabel("observed order p = log2(|q(dt) − q(dt/2)| / |q(dt/2) − q(dt/4)|)")
+    ax.grid(True, axis="x", lw=0.3)
+    ax.plot([], [], "o", color="tab:green", label="checked, p ≥ expected − 0.3")
+    ax.plot([], [], "|", color="k", ms=10, mew=2, label="the scheme's order (grey: the margin)")
+    ax.plot([], [], "o", mfc="none", color="tab:blue", label="not checked (max over a set, statistic, varying phase)")
+    ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.8 / (1.2 + 0.27 * len(rows)) - 0.02), ncol=3)
+    ax.set_title(f"{title}: observed dt orders (dt, dt/2, dt/4); quantities at rounding level are listed in the "
+                 "case notes", fontsize=9)
+    return save(fig, out_dir, f"dt_sweep_{family}")

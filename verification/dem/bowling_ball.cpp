@@ -55,4 +55,7 @@ VERIDEM_CASE({.name = "bowling_ball",
               .reference = "BENCHMARKS 5 #2 and 7 #9",
               .labels = {"dem", "quick"},
               .run = run});
+VERIDEM_SWEEP("bowling_ball", {.orders = {{"t*", 1.0,
+                                           "the end of sliding is resolved by the tangential spring, whose "
+                                           "start is first order (convergence_orders)"}}});
 } // namespace veridem::verify

@@ -71,7 +71,7 @@ Run runFrame(bool absolute, const TurntableSetup& s, const CaseContext& context)
     std::vector<Real> angle;
     Real previous = 0, unwrapped = 0;
     std::uint64_t n = 0;
-    const std::uint64_t every = 5000; // 0.05 s
+    const auto every = static_cast<std::uint64_t>(std::llround(0.05 / (kStep * context.dtScale))); // 0.05 s
     runFor(world, kDuration, kStep, context, "rolling_turntable_frames",
            [&](const World& w)
            {
@@ -205,4 +205,10 @@ VERIDEM_CASE(
      .reference = "BENCHMARKS 1b, 2.3; Ai et al. 2011; derivation in the file",
      .labels = {"dem", "quick", "rolling"},
      .run = framesRun});
+VERIDEM_SWEEP(
+    "rolling_turntable_frames",
+    {.orders = {{"relative frame", 1.0, "the rolling torque uses the half-step w: first order"},
+                {"absolute frame: orbit rate", 1.0, "the rolling torque uses the half-step w: first order"},
+                {"absolute frame: deficit", 1.0, "the rolling torque uses the half-step w: first order"},
+                {"absolute frame: spin", 1.0, "the rolling torque uses the half-step w: first order"}}});
 } // namespace veridem::verify
