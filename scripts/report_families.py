@@ -82,6 +82,7 @@ def chung_ooi_sweep_figure(out_dir, case, named):
     fig, axes = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.4))
     axes = np.atleast_1d(axes)
     for ax, (xc, yc, rc, xl, yl, logx) in zip(axes, panels):
+        rigid_drawn = False
         for k, (name, (header, data)) in enumerate(sorted(named.items())):
             x, y = column(header, data, xc), column(header, data, yc)
             if x is None or y is None:
@@ -90,8 +91,9 @@ def chung_ooi_sweep_figure(out_dir, case, named):
             colour = plt.cm.tab10(k)
             ax.plot(x[order], y[order], MARKERS[k % 4], color=colour, mfc="none", ms=6, label=f"DEM, {material_of(name)}")
             rigid = column(header, data, rc) if rc else None
-            if rigid is not None and k == 0:
+            if rigid is not None and not rigid_drawn:
                 ax.plot(x[order], rigid[order], "-", color="k", lw=1.3, label="rigid body")
+                rigid_drawn = True
         if logx:
             ax.set_xscale("log")
         ax.set_xlabel(xl)

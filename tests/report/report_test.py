@@ -39,6 +39,8 @@ with tempfile.TemporaryDirectory() as out:
     series("chung_ooi_t4", "al_oxide_sweep", ["theta_deg", "e_t", "e_t_rigid", "omega", "omega_rigid", "rebound_deg",
                                               "rebound_deg_rigid", "slid"],
            [[th, 0.9, 0.8, 500, 480, 10, 9, 1] for th in (5, 45, 85)])
+    series("chung_ooi_t4", "dt_sweep", ["quantity", "dt_scale", "difference", "difference_expected_slope"],
+           [[0, 1, 1e-4, 1e-4], [0, 0.5, 5e-5, 5e-5]])
     series("chung_ooi_t1", "glass_force", ["t", "delta", "F", "F_hertz"], [[1e-6 * i, 1e-6 * i, i, i] for i in range(5)])
     series("chung_ooi_t3", "al_oxide_restitution", ["e_in", "e_out", "e_identity"], [[0.5, 0.5, 0.5], [1, 1, 1]])
     series("convergence_orders", "orders", ["study", "dt_over_tc", "error", "error_expected_slope"],
