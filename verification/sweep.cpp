@@ -68,10 +68,11 @@ CaseResult runWithSweep(const Case& c, const CaseContext& context)
                                        q.relative ? 0.0 : 1e-6 * q.tolerance);
         if (!std::isfinite(d1) || !std::isfinite(d2) || d1 <= floor || d2 <= floor)
         {
-            std::snprintf(text, sizeof text,
-                          "dt sweep, %s: q(dt) - q(dt/2) = %.2g, q(dt/2) - q(dt/4) = %.2g: at rounding level "
-                          "(<= %.2g), no order observable",
-                          q.name.c_str(), q1 - q2, q2 - q4, floor);
+            std::snprintf(
+                text, sizeof text,
+                "dt sweep, %s: q(dt) - q(dt/2) = %.2g, q(dt/2) - q(dt/4) = %.2g: below the rounding "
+                "floor %.2g (round-off of up to 1e7 steps), no order observable",
+                q.name.c_str(), q1 - q2, q2 - q4, floor);
             result.notes.push_back(text);
             continue;
         }
