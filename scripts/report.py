@@ -22,7 +22,9 @@ editing this script):
   sliding_block*.csv with a column v and L_* columns   Fig. 1, stop distance vs initial velocity
   chung_ooi_t*/<material>_sweep|_force|_restitution.csv  Chung & Ooi's figures over the rigid lines
   convergence_*/orders.csv     log-log error against dt, with the expected slope
-  rolling_turntable*/*_orbit.csv   orbit radius against time, relative and absolute frames
+  */dt_sweep.csv               a case's dt sweep (verification/sweep.h): successive differences
+                               against dt, one log-log figure per family
+  rolling_turntable*/frames.csv   orbit radius and spin against time, relative and absolute frames
 
 Only the Python standard library, numpy and matplotlib (Debian python3-matplotlib, Agg backend).
 """
@@ -39,8 +41,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from report_families import (CHUNG_OOI_PANELS, chung_ooi_force_figure, chung_ooi_restitution_figure,  # noqa: E402
-                             chung_ooi_sweep_figure, convergence_figure, family_of, rolling_frames_figure)
+from report_families import (CHUNG_OOI_PANELS, FAMILIES, chung_ooi_force_figure,  # noqa: E402
+                             chung_ooi_restitution_figure, chung_ooi_sweep_figure, convergence_figure,
+                             dt_sweep_figure, family_of, rolling_frames_figure)
 from report_html import write_html  # noqa: E402
 from report_util import column, read_series, save  # noqa: E402
 
@@ -292,20 +295,31 @@ def sliding_block_figure(out_dir, case, named_series):
 
 
 def generic_figure(out_dir, case, name, header, data):
+    """A series the report has no figure for: the first column on x; the other columns grouped by
+    their prefix (x, x_theory; v, v_theory ...), one panel per group so that no panel mixes units."""
     if data.shape[0] == 0 or data.shape[1] < 2:
         return None
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    groups = {}
+    for k, c in enumerate(header[1:9], start=1):
+        groups.setdefault(re.split(r"[_\d]", c)[0], []).append((k, c))
+    panels = list(groups.items()) if 1 < len(groups) <= 4 else [("", [(k, c) for k, c in enumerate(header[1:9], 1)])]
+    fig, axes = plt.subplots(1, len(panels), figsize=(7.5 if len(panels) == 1 else 4.2 * len(panels), 3.8))
+    axes = np.atleast_1d(axes)
     x = data[:, 0]
     stride = max(1, data.shape[0] // 5000)
-    for k, c in enumerate(header[1:9], start=1):
-        ax.plot(x[::stride], data[::stride, k], lw=0.9, marker="o" if data.shape[0] < 30 else None, ms=3, label=c)
-    ax.set_xlabel(UNITS.get(header[0], header[0]))
-    prefixes = {re.split(r"[_\d]", c)[0] for c in header[1:9]}
-    if len(prefixes) == 1:
-        ax.set_ylabel(UNITS.get(prefixes.pop(), ""))
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title(f"{case}: {name}", fontsize=10)
+    for ax, (prefix, columns) in zip(axes, panels):
+        for k, c in columns:
+            theory = "theory" in c or "expected" in c
+            ax.plot(x[::stride], data[::stride, k], "--" if theory else "-", lw=1.4 if theory else 0.9,
+                    marker="o" if data.shape[0] < 30 and not theory else None, ms=3, label=c)
+        ax.set_xlabel(UNITS.get(header[0], header[0]))
+        label = prefix or ({re.split(r"[_\d]", c)[0] for _, c in columns}.pop() if len(
+            {re.split(r"[_\d]", c)[0] for _, c in columns}) == 1 else "")
+        ax.set_ylabel(UNITS.get(label, label))
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(f"{case}: {name}", fontsize=10)
+    fig.tight_layout()
     return save(fig, out_dir, f"{case}_{name}")
 
 
@@ -393,7 +407,7 @@ def main():
             continue
         named = series[case]
         if case in CHUNG_OOI_PANELS:
-            sweeps = {n: v for n, v in named.items() if n.endswith("_sweep")}
+            sweeps = {n: v for n, v in named.items() if n.endswith("_sweep") and n != "dt_sweep"}
             path = chung_ooi_sweep_figure(out_dir, case, sweeps) if sweeps else None
         else:
             sweeps = {n: v for n, v in named.items() if n.endswith("_force")}
@@ -416,6 +430,17 @@ def main():
             if path:
                 figures.append(("rolling", "", case, path))
                 used.update((case, n) for n in series[case])
+
+    # The dt sweeps of the collision, friction and rolling cases, one figure per family, in the
+    # convergence section.
+    for key, title, _, _ in FAMILIES:
+        sweeps = {c: (*s["dt_sweep"], notes_of.get(c, [])) for c, s in series.items()
+                  if "dt_sweep" in s and family_of(c) == key}
+        if sweeps:
+            path = dt_sweep_figure(out_dir, key, title, sweeps)
+            if path:
+                figures.append(("convergence", "dt sweeps of the cases (dt, dt/2, dt/4)", title, path))
+        used.update((c, "dt_sweep") for c in sweeps)
 
     # Everything else: many-ball paths, generic plots.
     for case in sorted(series):

@@ -82,6 +82,7 @@ def chung_ooi_sweep_figure(out_dir, case, named):
     fig, axes = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.4))
     axes = np.atleast_1d(axes)
     for ax, (xc, yc, rc, xl, yl, logx) in zip(axes, panels):
+        rigid_drawn = False
         for k, (name, (header, data)) in enumerate(sorted(named.items())):
             x, y = column(header, data, xc), column(header, data, yc)
             if x is None or y is None:
@@ -90,8 +91,9 @@ def chung_ooi_sweep_figure(out_dir, case, named):
             colour = plt.cm.tab10(k)
             ax.plot(x[order], y[order], MARKERS[k % 4], color=colour, mfc="none", ms=6, label=f"DEM, {material_of(name)}")
             rigid = column(header, data, rc) if rc else None
-            if rigid is not None and k == 0:
+            if rigid is not None and not rigid_drawn:
                 ax.plot(x[order], rigid[order], "-", color="k", lw=1.3, label="rigid body")
+                rigid_drawn = True
         if logx:
             ax.set_xscale("log")
         ax.set_xlabel(xl)
@@ -166,24 +168,99 @@ def convergence_figure(out_dir, case, header, data, notes):
 
 
 def rolling_frames_figure(out_dir, case, named):
-    fig, ax = plt.subplots(figsize=(8, 4.8))
-    drawn = False
-    for k, name in enumerate(("relative_orbit", "absolute_orbit")):
-        if name not in named:
-            continue
-        header, data = named[name]
-        t, rho, rho_t = column(header, data, "t"), column(header, data, "rho"), column(header, data, "rho_theory")
-        colour = plt.cm.tab10(k)
-        ax.plot(t, rho * 1e3, color=colour, lw=1.1, label=f"DEM, {name.replace('_orbit', '')} frame")
-        if k == 0:
-            ax.plot(t, rho_t * 1e3, "--", color="k", lw=1.5, label="rigid rolling T2 (RK4), relative frame")
-        drawn = True
-    if not drawn:
-        plt.close(fig)
+    """Orbit radius and spin about the normal against time, relative and absolute frames, DEM
+    (solid) over the closed forms (dashed), as a radius-growth plot in the style of BENCHMARKS 1b."""
+    if "frames" not in named:
         return None
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("orbit radius ρ = |v|/ω_o (mm)")
-    ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8)
-    ax.set_title("Turntable, ball set down co-rotating near the axis: orbit growth by rolling friction", fontsize=10)
+    header, data = named["frames"]
+    t = column(header, data, "t")
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11.5, 4.4))
+    for k, frame in enumerate(("relative", "absolute")):
+        rho, rho_t = column(header, data, f"rho_{frame}"), column(header, data, f"rho_{frame}_theory")
+        spin = column(header, data, f"spin_{frame}")
+        colour = plt.cm.tab10(k)
+        if rho is not None:
+            a1.plot(t, rho * 1e3, color=colour, lw=1.2, label=f"DEM, {frame} frame")
+        if rho_t is not None:
+            a1.plot(t, rho_t * 1e3, "--", color="k" if k == 0 else "0.45", lw=1.0,
+                    label="ρ0 + V_r t" if k == 0 else "ρ⁷s⁵ = const, t(s)")
+        if spin is not None:
+            a2.plot(t, spin, color=colour, lw=1.2, label=f"DEM, {frame} frame")
+    spin_t = column(header, data, "spin_absolute_theory")
+    if spin_t is not None:
+        a2.plot(t, spin_t, "--", color="0.45", lw=1.0, label="absolute: ds/dt = −(5/2)(μr g/a²) s/|ω|")
+    a1.set_ylabel("orbit radius ρ = |v|/ω_o (mm)")
+    a2.set_ylabel("spin about the table normal s = ω·k (rad/s)")
+    for ax in (a1, a2):
+        ax.set_xlabel("t (s)")
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Turntable (Ω = 10 rad/s, μr = 1.5e-6 m), orbit centred on the axis, ball sharing the table's "
+                 "spin: both frames orbit at 2Ω/7", fontsize=10)
+    fig.tight_layout()
     return save(fig, out_dir, f"{case}_radius")
+
+
+def sweep_orders(header, data, notes):
+    """A case's dt sweep as rows (label, observed order, expected order or None), from its notes
+    ("dt sweep K, NAME: differences d1, d2: order p") and its dt_sweep series (the expected slope
+    column is finite for the checked quantities)."""
+    names = {}
+    for note in notes:
+        m = re.match(r"dt sweep (\d+), (.*?): differences ([^,]+), ([^:]+): order", note)
+        if m:
+            names[int(m.group(1))] = m.group(2)
+    index, diff = column(header, data, "quantity"), column(header, data, "difference")
+    ref = column(header, data, "difference_expected_slope")
+    rows = []
+    if index is None or diff is None:
+        return rows
+    for i in sorted(set(index.astype(int))):
+        d = diff[index == i]
+        r = ref[index == i] if ref is not None else np.array([np.nan, np.nan])
+        if len(d) < 2 or d[1] <= 0:
+            continue
+        observed = float(np.log2(d[0] / d[1]))
+        expected = float(np.log2(r[0] / r[1])) if np.all(np.isfinite(r)) and r[1] > 0 else None
+        rows.append((names.get(i, f"quantity {i}"), observed, expected))
+    return rows
+
+
+def dt_sweep_figure(out_dir, family, title, sweeps, margin=0.3):
+    """One family's dt sweeps: the observed order p = log2(|q(dt) - q(dt/2)| / |q(dt/2) - q(dt/4)|)
+    of every quantity (filled: checked against the scheme's order, the bar marking p_expected - margin
+    and p_expected; open: printed only), grouped by case."""
+    rows = []
+    for case, (header, data, notes) in sorted(sweeps.items()):
+        for label, observed, expected in sweep_orders(header, data, notes):
+            rows.append((f"{case.replace('chung_ooi_', 'C&O ')}: {label}", observed, expected))
+    if not rows:
+        return None
+    fig, ax = plt.subplots(figsize=(11, 1.2 + 0.27 * len(rows)))
+    y = np.arange(len(rows))[::-1]
+    for k, (label, observed, expected) in zip(y, rows):
+        shown = min(max(observed, -1.0), 5.0)
+        if expected is not None:
+            ax.plot([expected - margin, expected], [k, k], "-", color="0.6", lw=6, solid_capstyle="butt")
+            ax.plot([expected], [k], "|", color="k", ms=12, mew=2)
+            ok = observed >= expected - margin
+            ax.plot([shown], [k], "o", color="tab:green" if ok else "tab:red", ms=7)
+        else:
+            ax.plot([shown], [k], "o", mfc="none", color="tab:blue", ms=7)
+        if shown != observed:
+            ax.annotate(f"{observed:.1f}", (shown, k), textcoords="offset points", xytext=(6, -3), fontsize=7)
+    ax.set_yticks(y)
+    ax.set_yticklabels([r[0][:95] for r in rows], fontsize=7)
+    ax.set_xlim(-1.2, 5.2)
+    ax.set_ylim(-0.8, len(rows) - 0.2)
+    ax.axvline(1, color="0.85", lw=0.8, zorder=0)
+    ax.axvline(2, color="0.85", lw=0.8, zorder=0)
+    ax.set_xlabel("observed order p = log2(|q(dt) − q(dt/2)| / |q(dt/2) − q(dt/4)|)")
+    ax.grid(True, axis="x", lw=0.3)
+    ax.plot([], [], "o", color="tab:green", label="checked, p ≥ expected − 0.3")
+    ax.plot([], [], "|", color="k", ms=10, mew=2, label="the scheme's order (grey: the margin)")
+    ax.plot([], [], "o", mfc="none", color="tab:blue", label="not checked (max over a set, statistic, varying phase)")
+    ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.8 / (1.2 + 0.27 * len(rows)) - 0.02), ncol=3)
+    ax.set_title(f"{title}: observed dt orders (dt, dt/2, dt/4); quantities at rounding level are listed in the "
+                 "case notes", fontsize=9)
+    return save(fig, out_dir, f"dt_sweep_{family}")

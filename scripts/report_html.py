@@ -77,7 +77,7 @@ def write_html(out_dir, cases, figures):
       "table{border-collapse:collapse;font-size:12px;width:100%}td,th{border:1px solid #ccc;padding:3px 5px;"
       "vertical-align:top}th{background:#eee}.pass{color:#070;font-weight:bold}.fail{color:#b00;font-weight:bold}"
       "td.num{text-align:right;font-family:monospace;white-space:nowrap}.why{color:#555;font-size:11px}"
-      "figure{display:inline-block;margin:6px;vertical-align:top}figure img{max-width:620px;border:1px solid #ddd}"
+      "figure{display:inline-block;margin:6px;vertical-align:top}figure img{max-width:600px;border:1px solid #ddd}"
       "figure img.wide{max-width:1240px}"
       "figcaption{font-size:12px;color:#444}.notes{font-size:12px;color:#333}"
       "table.summary{font-size:14px;width:auto}table.summary td{padding:5px 10px}"
@@ -89,7 +89,7 @@ def write_html(out_dir, cases, figures):
       f"BENCHMARKS.md. <b>{passed} of {len(cases)} cases passed</b>; the cases took {total_seconds:.1f} s in total.</p>")
     w("<h2 id='summary'>Summary by family</h2>")
     w("<table class='summary'><tr><th>family</th><th>cases</th><th>passed</th><th>worst error / tolerance</th>"
-      "<th>at</th></tr>")
+      "<th>at</th><th>dt orders checked (passed / checked)</th></tr>")
     for key, title, _, _ in FAMILIES:
         members = by_family[key]
         if not members:
@@ -104,11 +104,18 @@ def write_html(out_dir, cases, figures):
                 if r > worst:
                     worst, where = r, f"{c['name']}: {q['name']}"
         cls = "pass" if ok == len(members) else "fail"
+        orders = [q for c in members for q in c.get("quantities", []) if q["name"].startswith("dt order")]
+        good = sum(1 for q in orders if q.get("passed"))
+        order_cell = (f"<td class='num {'pass' if good == len(orders) else 'fail'}'>{good} / {len(orders)}</td>"
+                      if orders else "<td class='num'>–</td>")
         w(f"<tr><td><a href='#{key}'>{html.escape(title)}</a></td><td class='num'>{len(members)}</td>"
-          f"<td class='num {cls}'>{ok}</td><td class='num'>{fmt(worst)}</td><td class='why'>{html.escape(where)}</td></tr>")
+          f"<td class='num {cls}'>{ok}</td><td class='num'>{fmt(worst)}</td><td class='why'>{html.escape(where)}</td>"
+          f"{order_cell}</tr>")
     w("</table><p class='why'>error / tolerance: the largest share of its tolerance any check of the family uses "
       "(above 1 fails). One-sided checks (a sign, or a miss that must exceed a bound) are written as windows "
-      "and use much of their tolerance by construction. Failing cases are listed in their family's section.</p>")
+      "and use much of their tolerance by construction. Failing cases are listed in their family's section. dt orders: "
+      "the collision, friction and rolling cases run at dt, dt/2 and dt/4; their observed orders are drawn in the "
+      "convergence section.</p>")
     w("<details><summary>Conventions and decisions</summary>")
     w("<h3>Conventions</h3><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in CONVENTIONS) + "</ul>")
     w("<h3>Decisions (BENCHMARKS.md)</h3><ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in DECISIONS) + "</ul>")
@@ -132,7 +139,8 @@ def write_html(out_dir, cases, figures):
             if sub and sub != subsection:
                 w(f"<h3>{html.escape(sub)}</h3>")
                 subsection = sub
-            wide = " class='wide'" if path.endswith(("_sweep.png", "_force.png", "_orders.png")) else ""
+            wide = (" class='wide'" if path.endswith(("_sweep.png", "_force.png", "_orders.png", "_radius.png"))
+                    or "/dt_sweep_" in path else "")
             w(f"<figure><a href='{path}'><img{wide} src='{path}' alt='{html.escape(fig_title)}'></a>"
               f"<figcaption>{html.escape(fig_title)}</figcaption></figure>")
         quantities = sum(len(c.get("quantities", [])) for c in members)

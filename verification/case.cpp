@@ -8,6 +8,8 @@ namespace veridem::verify
 
 double Quantity::error() const
 {
+    if (atLeast)
+        return std::fmax(expected - measured, 0.0);
     const double diff = std::abs(measured - expected);
     if (!relative)
         return diff;

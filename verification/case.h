@@ -12,7 +12,8 @@
 namespace veridem::verify
 {
 
-/// One compared number. The check is |measured - expected| <= tolerance * (relative ? |expected| : 1).
+/// One compared number. The check is |measured - expected| <= tolerance * (relative ? |expected| : 1),
+/// or, for a lower bound (atLeast), expected - measured <= tolerance.
 struct Quantity
 {
     std::string name;     // e.g. "v_final"
@@ -22,6 +23,7 @@ struct Quantity
     double tolerance = 0; // relative (fraction) or absolute (in `unit`)
     bool relative = true; // how `tolerance` is read
     std::string why;      // where the tolerance comes from
+    bool atLeast = false; // one-sided: passes when measured >= expected - tolerance (error: the shortfall)
 
     double error() const; // relative error if `relative`, else absolute error
     bool passed() const;
@@ -47,7 +49,32 @@ struct CaseResult
 struct CaseContext
 {
     bool showProgress = false; // long cases print progress on stderr
+    double dtScale = 1;        // every time step of the case is multiplied by this (dt sweeps)
 };
+
+/// An expected order of the dt error of the quantities whose name starts with `prefix`.
+struct SweepOrder
+{
+    std::string prefix;
+    double expected = 0; // order p of the error ~ dt^p
+    std::string why;     // where it comes from (the scheme and the quantity)
+};
+
+/// A dt sweep (sweep.h): the case runs again at dt/2 and dt/4, and every quantity's observed order
+/// is printed; those matching `orders` are checked against it within +-`margin`.
+struct DtSweep
+{
+    std::vector<SweepOrder> orders;
+    double margin = 0.3;
+};
+
+/// Declares the dt sweep of the case `caseName` (VERIDEM_SWEEP).
+struct SweepRegistrar
+{
+    SweepRegistrar(std::string caseName, DtSweep sweep);
+};
+/// The sweep declared for a case, or null.
+const DtSweep* sweepOf(const std::string& caseName);
 
 struct Case
 {
@@ -81,3 +108,7 @@ Quantity absoluteQuantity(std::string name, std::string unit, double expected, d
 #define VERIDEM_CASE(...)                                                                                    \
     static const ::veridem::verify::Registrar VERIDEM_CONCAT(veridemCaseRegistrar_,                          \
                                                              __LINE__)(::veridem::verify::Case __VA_ARGS__)
+/// Declares a case's dt sweep: VERIDEM_SWEEP("case_name", {.orders = {{"prefix", 2.0, "why"}}});
+#define VERIDEM_SWEEP(caseName, ...)                                                                         \
+    static const ::veridem::verify::SweepRegistrar VERIDEM_CONCAT(veridemSweepRegistrar_, __LINE__)(         \
+        caseName, ::veridem::verify::DtSweep __VA_ARGS__)

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "exec/thread_pool.h"
+#include "sweep.h"
 
 #include <algorithm>
 #include <atomic>
@@ -146,7 +147,7 @@ int runCases(const RunRequest& request)
         const auto start = std::chrono::steady_clock::now();
         try
         {
-            o.result = chosen[k]->run(context);
+            o.result = runWithSweep(*chosen[k], context);
         }
         catch (const std::exception& e)
         {

@@ -44,8 +44,28 @@ void checkTimeStep(const io::DemScene& scene, const RunOptions& options)
             "veridem: warning: dt is more than tc/20: contacts are resolved by fewer than 20 steps\n");
 }
 
-/// Prints each material's rolling friction in both conventions (length and dimensionless) for
-/// the radii present, so the two are never confused.
+/// The scene-file name of a rolling model (`rolling_model`) and its class in Ai et al. (2011).
+const char* rollingModelName(dem::RollingModel model)
+{
+    switch (model)
+    {
+    case dem::RollingModel::None:
+        return "none";
+    case dem::RollingModel::ConstantTorque:
+        return "constant_torque, type A, w relative to the partner";
+    case dem::RollingModel::Epsd:
+        return "epsd, type C";
+    case dem::RollingModel::Viscous:
+        return "viscous, type B";
+    case dem::RollingModel::ConstantTorqueAbsolute:
+        return "constant_torque_absolute, type A, the particle's own w";
+    }
+    return "unknown";
+}
+
+/// Prints each material's rolling model and its friction in both conventions (length and
+/// dimensionless) for the radii present, so the two are never confused; for the viscous model
+/// its coefficient c_r.
 void printRollingFrictionConversion(const dem::World& world)
 {
     for (std::uint32_t m = 0; m < world.materials.size(); ++m)
@@ -63,8 +83,14 @@ void printRollingFrictionConversion(const dem::World& world)
             }
         if (largest == 0)
             continue;
-        const char* model = material.rollingModel == dem::RollingModel::Epsd ? "EPSD" : "constant torque";
-        if (material.rollingFrictionLength > 0)
+        const char* model = rollingModelName(material.rollingModel);
+        if (material.rollingModel == dem::RollingModel::Viscous)
+            std::fprintf(stderr,
+                         "veridem: material '%s': rolling friction (%s) c_r = %.4g s/m: torque -c_r Fn R_r^2 "
+                         "w_rel, R_r = %.4g m (wall) to %.4g m (two spheres of R = %.4g m)\n",
+                         material.name.c_str(), model, material.rollingViscousCoefficient, largest,
+                         smallest / 2, smallest);
+        else if (material.rollingFrictionLength > 0)
             std::fprintf(
                 stderr,
                 "veridem: material '%s': rolling friction (%s) mu_r = %.4g m = mu_r' * R with mu_r' = "

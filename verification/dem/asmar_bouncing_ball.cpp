@@ -150,4 +150,8 @@ VERIDEM_CASE({.name = "asmar_bouncing_ball",
               .reference = "Asmar et al. 2002 (reconstructed, BENCHMARKS 3); BENCHMARKS 5.3",
               .labels = {"dem", "quick", "asmar"},
               .run = run});
+VERIDEM_SWEEP(
+    "asmar_bouncing_ball",
+    {.orders = {{"worst rel. error of apex h_n vs rigid", 2.0,
+                 "apex heights follow e, second order with the touch-weighted dashpot (docs/models.md)"}}});
 } // namespace veridem::verify

@@ -100,4 +100,8 @@ VERIDEM_CASE({.name = "asmar_energy_100_collisions",
               .reference = "BENCHMARKS 5.5",
               .labels = {"dem", "quick", "asmar"},
               .run = run});
+VERIDEM_SWEEP("asmar_energy_100_collisions",
+              {.orders = {
+                   {"max |E_n - E_0|/E_0", 2.0,
+                    "velocity Verlet's energy error per contact is O((omega_n dt)^2) (BENCHMARKS 5.5)"}}});
 } // namespace veridem::verify

@@ -68,4 +68,5 @@ VERIDEM_CASE({.name = "asmar_newton_cradle",
               .reference = "BENCHMARKS 5.6; Herrmann & Seitz 1982",
               .labels = {"dem", "quick", "asmar"},
               .run = run});
+VERIDEM_SWEEP("asmar_newton_cradle", {});
 } // namespace veridem::verify

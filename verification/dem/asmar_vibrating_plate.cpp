@@ -78,4 +78,7 @@ VERIDEM_CASE({.name = "asmar_vibrating_plate",
               .reference = "Asmar et al. 2002 (reconstructed, BENCHMARKS 3 #7)",
               .labels = {"dem", "quick", "asmar"},
               .run = run});
+VERIDEM_SWEEP("asmar_vibrating_plate",
+              {.orders = {
+                   {"worst |phi", 1.0, "a lift-off time found between steps is at least first order"}}});
 } // namespace veridem::verify

@@ -109,7 +109,7 @@ Outcome runUntilSeparated(World& world, Real dt, Real friction, const std::funct
 } // namespace
 
 Outcome wallImpact(const Solid& ball, Real restitution, Real friction, Real radius, Vec3 v0, Vec3 w0,
-                   Real stepsPerContact, const CaseContext&, bool keepHistory, Real startSteps)
+                   Real stepsPerContact, const CaseContext& context, bool keepHistory, Real startSteps)
 {
     World world = worldWith(hertzMaterial(ball, restitution, friction), {0, 0, 0});
     Solid rigid = ball;
@@ -122,7 +122,7 @@ Outcome wallImpact(const Solid& ball, Real restitution, Real friction, Real radi
     const Real mass = sphereMass(ball.density, radius);
     const Real vn = std::fabs(v0.z);
     const Real tc = hertzImpact(mass, radius, effectiveModulus(ball, true), vn).contactTime;
-    const Real dt = tc / stepsPerContact;
+    const Real dt = tc / stepsPerContact * context.dtScale; // (a dt sweep: sweep.h)
     world.particles.add({0, 0, radius + startSteps * vn * dt}, v0, w0, radius, ball.density, 0);
     return runUntilSeparated(
         world, dt, friction, [radius](const World& w) { return w.particles.position[0].z - radius; },
@@ -133,7 +133,7 @@ Outcome wallImpact(const Solid& ball, Real restitution, Real friction, Real radi
 }
 
 Outcome sphereImpact(const Solid& solid, Real restitution, Real friction, Real r1, Vec3 v1, Vec3 w1, Real r2,
-                     Vec3 v2, Vec3 w2, Real densityFactor2, Real stepsPerContact, const CaseContext&,
+                     Vec3 v2, Vec3 w2, Real densityFactor2, Real stepsPerContact, const CaseContext& context,
                      bool keepHistory)
 {
     World world = worldWith(hertzMaterial(solid, restitution, friction), {0, 0, 0});
@@ -144,8 +144,8 @@ Outcome sphereImpact(const Solid& solid, Real restitution, Real friction, Real r
     const Real m1 = sphereMass(solid.density, r1), m2 = sphereMass(heavy.density, r2);
     const Real mStar = m1 * m2 / (m1 + m2), rStar = r1 * r2 / (r1 + r2);
     const Real vn = std::fabs(v1.z - v2.z);
-    const Real dt =
-        hertzImpact(mStar, rStar, effectiveModulus(solid, false), vn).contactTime / stepsPerContact;
+    const Real dt = hertzImpact(mStar, rStar, effectiveModulus(solid, false), vn).contactTime /
+                    stepsPerContact * context.dtScale;
     const Real gap0 = 2.5 * vn * dt;
     // Split the initial gap so that the centre of mass stays at the origin for equal spheres.
     world.particles.add({0, 0, r1 + 0.5 * gap0}, v1, w1, r1, solid.density, 0);

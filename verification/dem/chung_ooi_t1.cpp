@@ -53,4 +53,12 @@ VERIDEM_CASE(
      .reference = "Chung & Ooi 2011; Johnson 1985; BENCHMARKS 4 and 7 #10",
      .labels = {"dem", "quick", "chung_ooi"},
      .run = run});
+VERIDEM_SWEEP("chung_ooi_t1",
+              {.orders = {
+                   {"F_max", 2.0, "the peak of a smooth Verlet trajectory sampled at the steps: O(dt^2)"},
+                   {"delta_max", 2.0, "the peak of a smooth Verlet trajectory sampled at the steps: O(dt^2)"},
+                   {"tc", 2.0, "interpolated at both ends: second order"},
+                   {"e (", 1.25,
+                    "the Hertz stiffness has an infinite slope at delta = 0: the step of separation errs by "
+                    "~dt^(5/4) (convergence_orders)"}}});
 } // namespace veridem::verify

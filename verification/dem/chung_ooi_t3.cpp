@@ -73,4 +73,9 @@ VERIDEM_CASE(
      .reference = "Chung & Ooi 2011; BENCHMARKS 4",
      .labels = {"dem", "quick", "chung_ooi"},
      .run = run});
+VERIDEM_SWEEP("chung_ooi_t3",
+              {.orders = {
+                   {"F_max", 2.0, "the peak of a smooth Verlet trajectory sampled at the steps: O(dt^2)"},
+                   {"delta_max", 2.0, "the peak of a smooth Verlet trajectory sampled at the steps: O(dt^2)"},
+                   {"tc", 2.0, "interpolated at both ends: second order"}}});
 } // namespace veridem::verify

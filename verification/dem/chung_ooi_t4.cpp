@@ -102,4 +102,9 @@ VERIDEM_CASE({.name = "chung_ooi_t4",
               .reference = "Chung & Ooi 2011; Maw, Barber & Fawcett 1976; BENCHMARKS 4",
               .labels = {"dem", "quick", "chung_ooi"},
               .run = run});
+VERIDEM_SWEEP(
+    "chung_ooi_t4",
+    {.orders = {
+         {"e_t - 5/7", 1.0,
+          "the tangential spring adds the slip of the whole first step: first order (convergence_orders)"}}});
 } // namespace veridem::verify

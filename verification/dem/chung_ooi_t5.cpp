@@ -96,4 +96,9 @@ VERIDEM_CASE({.name = "chung_ooi_t5",
               .reference = "Chung & Ooi 2011; Maw, Barber & Fawcett 1976; BENCHMARKS 4",
               .labels = {"dem", "quick", "chung_ooi"},
               .run = run});
+VERIDEM_SWEEP(
+    "chung_ooi_t5",
+    {.orders = {
+         {"psi_2/psi_1", 1.0,
+          "the tangential spring adds the slip of the whole first step: first order (convergence_orders)"}}});
 } // namespace veridem::verify

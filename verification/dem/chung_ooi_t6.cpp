@@ -23,4 +23,5 @@ VERIDEM_CASE({.name = "chung_ooi_t6",
               .reference = "Chung & Ooi 2011; BENCHMARKS 4",
               .labels = {"dem", "chung_ooi"},
               .run = run});
+VERIDEM_SWEEP("chung_ooi_t6", {});
 } // namespace veridem::verify

@@ -54,4 +54,5 @@ VERIDEM_CASE({.name = "chung_ooi_t7",
               .reference = "Chung & Ooi 2011; BENCHMARKS 4",
               .labels = {"dem", "quick", "chung_ooi"},
               .run = run});
+VERIDEM_SWEEP("chung_ooi_t7", {});
 } // namespace veridem::verify

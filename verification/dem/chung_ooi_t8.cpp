@@ -24,4 +24,5 @@ VERIDEM_CASE({.name = "chung_ooi_t8",
               .reference = "Chung & Ooi 2011; BENCHMARKS 4",
               .labels = {"dem", "chung_ooi"},
               .run = run});
+VERIDEM_SWEEP("chung_ooi_t8", {});
 } // namespace veridem::verify

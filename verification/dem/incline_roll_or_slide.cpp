@@ -55,4 +55,5 @@ VERIDEM_CASE({.name = "incline_roll_or_slide",
               .reference = "BENCHMARKS 5 #1 and 7 #8",
               .labels = {"dem", "quick"},
               .run = run});
+VERIDEM_SWEEP("incline_roll_or_slide", {});
 } // namespace veridem::verify

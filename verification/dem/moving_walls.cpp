@@ -66,4 +66,9 @@ VERIDEM_CASE(
      .reference = "rigid-body mechanics (bowling ball in the belt frame); BENCHMARKS 2.1",
      .labels = {"dem", "quick"},
      .run = run});
+VERIDEM_SWEEP(
+    "moving_walls",
+    {.orders = {
+         {"conveyor t*", 1.0,
+          "the end of sliding is resolved by the tangential spring, first order (convergence_orders)"}}});
 } // namespace veridem::verify

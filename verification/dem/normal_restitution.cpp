@@ -72,4 +72,6 @@ VERIDEM_CASE({.name = "normal_restitution",
               .reference = "Tsuji et al. 1992; BENCHMARKS 2.1 and 7 #2",
               .labels = {"dem", "quick"},
               .run = run});
+VERIDEM_SWEEP("normal_restitution",
+              {.orders = {{"tc", 2.0, "the contact time is interpolated at both ends: second order"}}});
 } // namespace veridem::verify

@@ -108,4 +108,8 @@ VERIDEM_CASE({.name = "rolling_resistance_models",
               .reference = "Ai, Chen, Rotter & Ooi 2011; BENCHMARKS 2.3",
               .labels = {"dem", "quick", "rolling"},
               .run = run});
+VERIDEM_SWEEP(
+    "rolling_resistance_models",
+    {.orders = {{"type B", 1.0, "the rolling torque uses the half-step w: an O(dt) lag (docs/models.md)"},
+                {"type A absolute incline", 1.0, "the rolling torque uses the half-step w: first order"}}});
 } // namespace veridem::verify

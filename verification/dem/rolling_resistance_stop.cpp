@@ -97,4 +97,5 @@ VERIDEM_CASE({.name = "rolling_resistance_stop",
               .reference = "Ai et al. 2011; BENCHMARKS 2.3 and 7 #12",
               .labels = {"dem", "quick"},
               .run = run});
+VERIDEM_SWEEP("rolling_resistance_stop", {});
 } // namespace veridem::verify

@@ -13,6 +13,7 @@ void runFor(World& world, Real duration, Real dt, const CaseContext& context, co
 {
     if (!world.prepared)
         dem::prepare(world);
+    dt *= context.dtScale; // a dt sweep (sweep.h) runs the case at dt/2 and dt/4 too
     const auto steps = static_cast<std::uint64_t>(std::llround(duration / dt));
     const auto start = std::chrono::steady_clock::now();
     auto lastReport = start;

@@ -48,4 +48,9 @@ VERIDEM_CASE({.name = "tangential_reversal",
               .reference = "BENCHMARKS 2.2",
               .labels = {"dem", "quick"},
               .run = run});
+VERIDEM_SWEEP(
+    "tangential_reversal",
+    {.orders = {
+         {"Vt'/Vt", 1.0,
+          "the tangential spring adds the slip of the whole first step: first order (convergence_orders)"}}});
 } // namespace veridem::verify

@@ -110,4 +110,9 @@ VERIDEM_CASE({.name = "two_sphere_collision",
               .reference = "BENCHMARKS 3 test 4 and 5 #5",
               .labels = {"dem", "quick"},
               .run = run});
+VERIDEM_SWEEP(
+    "two_sphere_collision",
+    {.orders = {
+         {"head-on restitution", 2.0,
+          "the linear dashpot weighted at touch and separation: e is second order (docs/models.md)"}}});
 } // namespace veridem::verify
