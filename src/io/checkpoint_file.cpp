@@ -215,6 +215,8 @@ CheckpointReader::CheckpointReader(std::filesystem::path path, CheckpointEngine 
     if (header.engine != static_cast<std::uint32_t>(engine))
         fail(std::string("is a checkpoint of a ") + engineName(header.engine) + " scene, not of a " +
              engineName(static_cast<std::uint32_t>(engine)) + " scene");
+    if (header.zero != 0)
+        fail("is corrupt: its header's reserved word is not 0");
     if (header.sceneHash != sceneHash)
         fail("belongs to another scene (the scene file's hash differs; restart with the scene file it "
              "was written from, unchanged)");
