@@ -121,6 +121,16 @@ if process.returncode == 130:
     same_state(f"{out}/sigint_straight/checkpoint.bin", f"{out}/sigint/checkpoint.bin", "3D after SIGINT")
     same_files("sigint_straight", "sigint", ["particles.csv", "thermo.csv", "particles.pvd"], "3D after SIGINT")
 
+# SIGTERM: the same stop, status 143.
+process = subprocess.Popen([veridem, "run", long3d, "--quiet", "--threads", "1", "--out", f"{out}/sigterm"],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+time.sleep(0.3)
+process.send_signal(signal.SIGTERM)
+_, stderr = process.communicate()
+check(process.returncode == 143 and "stopped by SIGTERM" in stderr,
+      f"SIGTERM: exit {process.returncode}, expected 143: {stderr.strip()}")
+check(os.path.exists(f"{out}/sigterm/checkpoint.bin"), "SIGTERM: no checkpoint")
+
 # ---- 2D ----
 outputs2d = ["checkpoint.bin", "bodies.csv", "energy.csv", "thermo.csv", "series.pvd", "frame_00004.vtu"]
 run(scene2d, "straight2d")
