@@ -196,10 +196,11 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             checkpointed = true;
         }
         const int signal = io::stopSignal();
-        if ((signal || (options.stopAtStep && s == *options.stopAtStep)) && s < totalSteps)
+        const bool stop = signal || (options.stopAtStep && s == *options.stopAtStep);
+        if (stop && !checkpointed)
+            writeCheckpoint();
+        if (stop && s < totalSteps)
         {
-            if (!checkpointed)
-                writeCheckpoint();
             recorder.close();
             thermo.close();
             if (options.progress)

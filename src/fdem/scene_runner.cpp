@@ -124,10 +124,11 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
             checkpointed = true;
         }
         const int signal = io::stopSignal();
-        if ((signal || (control.stopAtStep && i == *control.stopAtStep)) && i < totalSteps)
+        const bool stop = signal || (control.stopAtStep && i == *control.stopAtStep);
+        if (stop && !checkpointed)
+            writeCheckpointNow();
+        if (stop && i < totalSteps)
         {
-            if (!checkpointed)
-                writeCheckpointNow();
             output.finish();
             if (progress)
                 std::fprintf(stderr, "\n");

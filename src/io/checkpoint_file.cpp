@@ -192,6 +192,8 @@ CheckpointReader::CheckpointReader(std::filesystem::path path, CheckpointEngine 
     : path_(std::move(path)), checksum_(kChecksumStart)
 {
     std::error_code error;
+    if (!std::filesystem::exists(path_, error))
+        fail("does not exist");
     if (!std::filesystem::is_regular_file(path_, error))
         fail("is not a regular file");
     const std::uintmax_t size = std::filesystem::file_size(path_, error);

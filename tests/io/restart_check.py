@@ -4,8 +4,8 @@ restart").
 3D (restart_bed.toml: ~3000 spheres, friction, EPSD rolling springs, an oscillating floor and a
 moving wall): the straight run on 1 and on 2 threads; runs stopped at steps k1 = 337 (between
 outputs) and k2 = 750 (an output step) and restarted, on 1 and 2 threads alternately, into the
-same directory and into a fresh one; a run stopped by SIGINT at an unknown step and restarted.
-Every one must end in the same state: the final checkpoints are compared record by record (every
+same directory and into a fresh one; a run stopped by SIGINT at an unknown step and restarted
+(and one stopped by SIGTERM: status 143). Every one must end in the same state: the final checkpoints are compared record by record (every
 particle array, the neighbour list with its contact history, the wall contacts, time and step
 count: all but the output counters) and, in the same directory, the output files byte for byte.
 The springs are checked to be non-zero, so history is really carried.
@@ -176,7 +176,8 @@ corrupt[len(good) // 2] ^= 0x10
 with open(f"{out}/corrupt.bin", "wb") as f:
     f.write(corrupt)
 refused(scene3d, f"{out}/corrupt.bin", "is corrupt", "corrupt")
-refused(scene3d, f"{out}/no_such.bin", "is not a regular file", "missing")
+refused(scene3d, f"{out}/no_such.bin", "does not exist", "missing")
+refused(scene3d, out, "is not a regular file", "a directory")
 
 if failures:
     raise SystemExit(f"restart: {len(failures)} failure(s)")
