@@ -137,6 +137,16 @@ run(scene2d, "straight2d")
 final2d = records(f"{out}/straight2d/checkpoint.bin")
 check(any(v != 0 for (v,) in struct.iter_unpack("<d", b"".join(
     final2d["cpls"][k + 8:k + 56] for k in range(0, len(final2d["cpls"]), 104)))), "2D: no friction spring")
+# 2D thermo.csv: its columns, and at t = 0 (right after the settling, the block's nodes all set to
+# v = 1 m/s) kinetic = rho A v^2 / 2 = 2650 * 0.05 * 0.05 / 2 J/m: the lumped masses sum to rho A
+# up to rounding (64 + 16 terms of ~1e-16 relative error each: tolerance 1e-13).
+thermo2d = open(f"{out}/straight2d/thermo.csv").read().splitlines()
+check(thermo2d[0] == "t,bodies,nodes,triangles,couples,contacts,sliding,kinetic", f"2D thermo header {thermo2d[0]}")
+first = thermo2d[1].split(",")
+check(first[:4] == ["0", "2", "59", "64"] and abs(float(first[7]) - 2650 * 0.05 * 0.05 / 2) < 1e-13 * 3.3125,
+      f"2D thermo first row {thermo2d[1]}")
+check(len(thermo2d) == 6 and all(int(r.split(",")[5]) > 0 for r in thermo2d[2:]),
+      "2D thermo: expected 5 rows with touching contacts after t = 0")
 run(scene2d, "split2d", "--stop-at-step", "333")
 shutil.copy(f"{out}/split2d/checkpoint.bin", f"{out}/k333_2d.bin")
 run(scene2d, "split2d", "--restart", f"{out}/split2d/checkpoint.bin", "--stop-at-step", "1000")
