@@ -101,7 +101,8 @@ inline void readCheckpoint3d(std::string_view bytes)
     const std::filesystem::path path = std::filesystem::temp_directory_path() /
                                        ("veridem_fuzz_checkpoint_" + std::to_string(::getpid()) + ".bin");
     std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    io::DemScene scene = checkpointScene();
+    static const io::DemScene base = checkpointScene(); // (copied per input: no TOML parse each time)
+    io::DemScene scene = base;
     try
     {
         io::readDemCheckpoint(path, scene.world, kCheckpointSceneHash);
