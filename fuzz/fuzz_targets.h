@@ -7,13 +7,17 @@
 #include "core/error.h"
 #include "fdem/gmsh_reader.h"
 #include "fdem/scene.h"
+#include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
 #include "io/scene_limits.h"
 #include "io/toml_reader.h"
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <unistd.h>
 
 namespace veridem::fuzz
 {
@@ -52,6 +56,62 @@ inline void readScene2d(std::string_view text)
     catch (const InputError&)
     {
     }
+}
+
+/// The scene whose checkpoints readCheckpoint3d reads: 8 spheres with friction and EPSD rolling
+/// on an oscillating floor (every kind of record non-empty once stepped).
+inline constexpr const char* kCheckpointScene = R"(
+[simulation]
+dt = 2e-5
+duration = 1
+gravity = [0, 0, -30]
+vtk = false
+[[material]]
+name = "grain"
+density = 2500
+kn = 1e4
+restitution = 0.1
+rolling_model = "epsd"
+rolling_friction = 0.0005
+[[wall]]
+name = "floor"
+material = "grain"
+normal = [0, 0, 1]
+oscillation_amplitude = [0, 0, 0.0002]
+oscillation_omega = 300
+[[lattice]]
+material = "grain"
+radius = 0.005
+min = [0.0001, 0.0001, 0.0001]
+max = [0.0203, 0.0203, 0.0203]
+spacing = 0.0101
+velocity = [0.1, 0.05, -0.1]
+)";
+inline constexpr std::uint64_t kCheckpointSceneHash = 1; // (the fuzz inputs' header carries it)
+
+inline io::DemScene checkpointScene()
+{
+    return io::readDemScene(io::parseText(kCheckpointScene, "checkpoint.toml"), "checkpoint.toml");
+}
+
+/// Checkpoint bytes -> a world of kCheckpointScene restored from them (the reader takes a file: the
+/// bytes go to a temporary file of this process first).
+inline void readCheckpoint3d(std::string_view bytes)
+{
+    const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                       ("veridem_fuzz_checkpoint_" + std::to_string(::getpid()) + ".bin");
+    std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    static const io::DemScene base = checkpointScene(); // (copied per input: no TOML parse each time)
+    io::DemScene scene = base;
+    try
+    {
+        io::readDemCheckpoint(path, scene.world, kCheckpointSceneHash);
+    }
+    catch (const InputError&)
+    {
+    }
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
 }
 
 /// Gmsh .msh text -> validated triangle mesh.

@@ -1,5 +1,6 @@
 // veridem: the command-line program.
-//   veridem run SCENE [--out DIR] [--threads N]   run a scene file (DEM 3D or FEM/DEM 2D)
+//   veridem run SCENE [--out DIR] [--threads N] [--restart FILE] [--stop-at-step N]
+//                                                  run a scene file (DEM 3D or FEM/DEM 2D)
 //   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR] [--jobs N]
 #include "app/run_scene.h"
 #include "core/error.h"
@@ -51,7 +52,8 @@ int runCommand(const veridem::app::RunOptions& options)
 #ifdef VERIDEM_HAVE_FDEM
     if (type == "fdem2d")
         return veridem::fdem::runScene(scene, options.sceneFile, options.outDir, options.progress,
-                                       options.allowUnstableTimeStep);
+                                       options.allowUnstableTimeStep,
+                                       veridem::fdem::RunControl{options.restartFile, options.stopAtStep});
 #endif
     throw veridem::InputError(options.sceneFile +
                               ": [simulation] 'type' must be \"dem\" or \"fdem2d\" (got \"" + type + "\")");
@@ -74,6 +76,14 @@ int main(int argc, char** argv)
     run->add_flag("--quiet", quiet, "no progress output");
     run->add_flag("--force-dt", runOptions.allowUnstableTimeStep,
                   "run even if dt exceeds the stability limit (a warning is printed)");
+    run->add_option("--restart", runOptions.restartFile,
+                    "continue from this checkpoint (DIR/checkpoint.bin of a run of the same scene file), "
+                    "with the same bits as the run that wrote it");
+    std::uint64_t stopAtStep = 0;
+    auto* stopOption = run->add_option("--stop-at-step", stopAtStep,
+                                       "stop after this step (counted from the scene's start), writing "
+                                       "DIR/checkpoint.bin as on SIGINT; exit status 0")
+                           ->check(CLI::PositiveNumber);
     // Default: every CPU this process may use. A waiting thread blocks after a few microseconds
     // (exec/thread_pool.h), so a second thread does not slow a run down on a busy machine.
     int threads = veridem::exec::availableCpus();
@@ -107,6 +117,8 @@ int main(int argc, char** argv)
         {
             runOptions.outDir = outDir;
             runOptions.progress = !quiet;
+            if (stopOption->count() > 0)
+                runOptions.stopAtStep = stopAtStep;
             veridem::exec::setThreads(threads);
             return runCommand(runOptions);
         }

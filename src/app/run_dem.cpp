@@ -1,18 +1,23 @@
-// `veridem run` for 3D DEM scenes: read, check the time step, step with output between steps,
-// stop cleanly on a blow-up (keeping the output written so far), print a summary.
+// `veridem run` for 3D DEM scenes: read, check the time step (or restore a checkpoint), step with
+// output and checkpoints between steps, stop cleanly on a blow-up (keeping the output written so
+// far) or on SIGINT/SIGTERM (with a checkpoint), print a summary.
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "dem/time_step.h"
 #include "exec/thread_pool.h"
+#include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
 #include "io/particle_output.h"
+#include "io/run_control.h"
 #include "io/thermo_output.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
+#include <string>
 
 namespace veridem::app
 {
@@ -117,25 +122,72 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     dem::World& world = scene.world;
     checkTimeStep(scene, options);
     printRollingFrictionConversion(world);
+    const std::uint64_t sceneHash = io::sceneFileHash(options.sceneFile);
 
-    io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat);
-    io::ThermoRecorder thermo(options.outDir);
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
     const auto outputEvery = std::max<std::uint64_t>(1, std::llround(scene.outputInterval / scene.dt));
-    dem::prepare(world);
-    recorder.record(world);
-    thermo.record(world);
+    const std::uint64_t checkpointEvery =
+        scene.checkpointInterval > 0
+            ? std::max<std::uint64_t>(1, std::llround(scene.checkpointInterval / scene.dt))
+            : 0;
+    std::optional<io::ParticleRecorder::Resume> resume;
+    std::optional<std::uint64_t> thermoBytes;
+    if (!options.restartFile.empty())
+    {
+        const io::CheckpointOutputs saved = io::readDemCheckpoint(options.restartFile, world, sceneHash);
+        if (saved.fileBytes.size() != 2)
+            throw InputError("checkpoint '" + options.restartFile + "' is corrupt: it records " +
+                             std::to_string(saved.fileBytes.size()) + " output files, a 3D run has 2");
+        resume = io::ParticleRecorder::Resume{saved.frameTimes, saved.fileBytes[0]};
+        thermoBytes = saved.fileBytes[1];
+        if (world.stepCount > totalSteps)
+            throw InputError("checkpoint '" + options.restartFile + "' is at step " +
+                             std::to_string(world.stepCount) + ", after the scene's last step " +
+                             std::to_string(totalSteps));
+        std::fprintf(stderr, "veridem: restarting from '%s' at step %llu (t = %.9g s)\n",
+                     options.restartFile.c_str(), static_cast<unsigned long long>(world.stepCount),
+                     world.time);
+    }
+    else
+        dem::prepare(world);
+    if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
+        throw InputError("--stop-at-step " + std::to_string(*options.stopAtStep) +
+                         " is not after the start step " + std::to_string(world.stepCount));
+
+    io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat,
+                                  resume ? &*resume : nullptr);
+    io::ThermoRecorder thermo(options.outDir, thermoBytes);
+    if (!resume)
+    {
+        recorder.record(world);
+        thermo.record(world);
+    }
+    const std::filesystem::path checkpointPath = options.outDir / "checkpoint.bin";
+    const auto writeCheckpoint = [&]
+    {
+        const std::uint64_t csvBytes = recorder.csvBytes(), thermoSize = thermo.size();
+        io::writeDemCheckpoint(checkpointPath, world, sceneHash,
+                               {recorder.frameTimes(), {csvBytes, thermoSize}, 0});
+    };
+    io::stopOnSignals();
 
     const auto start = std::chrono::steady_clock::now();
     auto lastProgress = start;
-    // In runs of steps up to the next output or progress check (dem::advance: the bits of step()
+    const std::uint64_t firstStep = world.stepCount;
+    // In runs of steps up to the next output, checkpoint or stop (dem::advance: the bits of step()
     // calls, the kick passes fused), stopping after the first step whose state is not finite or
-    // whose overlap exceeds the limit.
-    constexpr std::uint64_t kProgressEvery = 1024; // steps between progress checks
-    for (std::uint64_t s = 0; s < totalSteps;)
+    // whose overlap exceeds the limit. A run is at most `chunk` steps, sized to ~10-50 ms of wall
+    // time, so that a signal is seen soon (the bits do not depend on where the runs end).
+    std::uint64_t chunk = 1;
+    constexpr std::uint64_t kMaxChunk = 1024;
+    for (std::uint64_t s = world.stepCount; s < totalSteps;)
     {
-        const std::uint64_t runEnd = std::min(
-            {(s / outputEvery + 1) * outputEvery, (s / kProgressEvery + 1) * kProgressEvery, totalSteps});
+        std::uint64_t runEnd = std::min({(s / outputEvery + 1) * outputEvery, s + chunk, totalSteps});
+        if (checkpointEvery)
+            runEnd = std::min(runEnd, (s / checkpointEvery + 1) * checkpointEvery);
+        if (options.stopAtStep)
+            runEnd = std::min(runEnd, *options.stopAtStep);
+        const auto runStart = std::chrono::steady_clock::now();
         const std::uint64_t done = dem::advance(world, scene.dt, runEnd - s, scene.maxOverlapFraction);
         s += done;
         if (s < runEnd || !world.health.finite || world.health.maxOverlapRatio > scene.maxOverlapFraction)
@@ -152,37 +204,69 @@ int runDemScene(const toml::table& table, const RunOptions& options)
               << options.outDir.string();
             throw SimulationError(m.str());
         }
+        const auto now = std::chrono::steady_clock::now();
+        const double runSeconds = std::chrono::duration<double>(now - runStart).count();
+        if (runSeconds < 0.01 && chunk < kMaxChunk)
+            chunk *= 2;
+        else if (runSeconds > 0.05 && chunk > 1)
+            chunk /= 2;
         if (s % outputEvery == 0 || s == totalSteps)
         {
             recorder.record(world);
             thermo.record(world);
         }
-        if (options.progress && s % kProgressEvery == 0)
+        bool checkpointed = false;
+        if (checkpointEvery && (s % checkpointEvery == 0 || s == totalSteps))
         {
-            const auto now = std::chrono::steady_clock::now();
+            writeCheckpoint();
+            checkpointed = true;
+        }
+        const int signal = io::stopSignal();
+        const bool stop = signal || (options.stopAtStep && s == *options.stopAtStep);
+        if (stop && !checkpointed)
+            writeCheckpoint();
+        if (stop && s < totalSteps)
+        {
+            recorder.close();
+            thermo.close();
+            if (options.progress)
+                std::fprintf(stderr, "\r%*s\r", 78, "");
+            std::fprintf(stderr,
+                         "veridem: %s at step %llu of %llu (t = %.9g s); checkpoint written; continue with: "
+                         "veridem run %s --restart %s --out %s\n",
+                         signal ? (std::string("stopped by ") + io::signalName(signal)).c_str() : "stopped",
+                         static_cast<unsigned long long>(s), static_cast<unsigned long long>(totalSteps),
+                         world.time, options.sceneFile.c_str(), checkpointPath.string().c_str(),
+                         options.outDir.string().c_str());
+            return signal ? io::kInterruptedBase + signal : 0;
+        }
+        if (options.progress && std::chrono::duration<double>(now - lastProgress).count() > 1)
+        {
             const double elapsed = std::chrono::duration<double>(now - start).count();
-            if (elapsed > 2 && std::chrono::duration<double>(now - lastProgress).count() > 1)
+            if (elapsed > 2)
             {
                 lastProgress = now;
-                const double fraction = double(s) / double(totalSteps);
+                const double fraction = double(s - firstStep) / double(totalSteps - firstStep);
                 std::fprintf(stderr, "\rveridem: %5.1f %%  t = %.4g s  step %llu/%llu  ETA %.0f s   ",
-                             100 * fraction, world.time, static_cast<unsigned long long>(s),
-                             static_cast<unsigned long long>(totalSteps), elapsed / fraction - elapsed);
+                             100 * double(s) / double(totalSteps), world.time,
+                             static_cast<unsigned long long>(s), static_cast<unsigned long long>(totalSteps),
+                             elapsed / fraction - elapsed);
                 std::fflush(stderr);
             }
         }
     }
     recorder.close();
     thermo.close();
+    const std::uint64_t stepsRun = totalSteps - firstStep;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.progress)
         std::fprintf(stderr, "\r%*s\r", 78, "");
     std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %zu particles, %zu outputs in %s\n",
-                static_cast<unsigned long long>(totalSteps), scene.dt, world.time, world.particles.size(),
+                static_cast<unsigned long long>(stepsRun), scene.dt, world.time, world.particles.size(),
                 recorder.framesWritten(), options.outDir.string().c_str());
     std::printf(
         "veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour rebuilds\n",
-        wall, exec::threads(), wall > 0 ? double(totalSteps) * double(world.particles.size()) / wall : 0.0,
+        wall, exec::threads(), wall > 0 ? double(stepsRun) * double(world.particles.size()) / wall : 0.0,
         world.neighbors.rebuildCount());
     return 0;
 }

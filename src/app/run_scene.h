@@ -3,7 +3,9 @@
 
 #include <toml++/toml.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace veridem::app
@@ -12,9 +14,12 @@ namespace veridem::app
 struct RunOptions
 {
     std::string sceneFile;
-    std::filesystem::path outDir;       // created if missing
-    bool progress = true;               // progress with ETA on stderr
-    bool allowUnstableTimeStep = false; // --force-dt: run above the stability limit (warned)
+    std::filesystem::path outDir;            // created if missing
+    bool progress = true;                    // progress with ETA on stderr
+    bool allowUnstableTimeStep = false;      // --force-dt: run above the stability limit (warned)
+    std::string restartFile;                 // --restart: continue from this checkpoint (empty: none)
+    std::optional<std::uint64_t> stopAtStep; // --stop-at-step: stop after this step (counted from
+                                             // the scene's start) with a checkpoint, as on SIGINT
 };
 
 /// 3D sphere DEM scene (type = "dem"). Returns the exit code.

@@ -145,6 +145,8 @@ class NeighborList
     std::size_t memoryBytes() const;
 
   private:
+    friend struct CheckpointAccess; // io/dem_checkpoint.cpp saves and restores the private state
+
     void zeroDeferred(std::uint32_t entry)
     {
         if (entry != kInBlock)

@@ -53,6 +53,7 @@ class WallContactList
     std::size_t memoryBytes() const;
 
   private:
+    friend struct CheckpointAccess; // io/dem_checkpoint.cpp saves and restores the private state
     std::vector<Vec3> wallDisplacementAtBuild_;
 };
 

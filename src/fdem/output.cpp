@@ -1,6 +1,7 @@
 #include "fdem/output.h"
 
 #include "core/error.h"
+#include "fdem/output_thermo.h"
 
 #include <cstdio>
 
@@ -64,38 +65,76 @@ void writeVtu(const World& world, const std::filesystem::path& file, io::VtkForm
     atomic.commit();
 }
 
-OutputWriter::OutputWriter(const std::filesystem::path& directory, bool vtk, io::VtkFormat format)
+namespace
+{
+std::string frameName(std::size_t frame)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05zu.vtu", frame);
+    return name;
+}
+} // namespace
+
+OutputWriter::OutputWriter(const std::filesystem::path& directory, bool vtk, io::VtkFormat format,
+                           const Resume* resume)
     : directory_(directory), vtk_(vtk), format_(format)
 {
     std::error_code ec;
     std::filesystem::create_directories(directory, ec);
     if (ec)
         throw OutputError("cannot create the output directory '" + directory.string() + "': " + ec.message());
-    bodies_.open(directory / "bodies.csv");
-    energy_.open(directory / "energy.csv");
-    bodies_.stream() << "time,body,name,x,y,vx,vy\n";
-    energy_.stream() << "time,kinetic,strain,gravity,friction_work,normal_damping_work\n";
-    bodies_.flush();
-    energy_.flush();
+    if (resume)
+    {
+        frameTimes_ = resume->frameTimes;
+        for (std::size_t k = 0; k < frameTimes_.size(); ++k)
+            listed_.push_back(std::filesystem::is_regular_file(directory / frameName(k), ec));
+    }
+    const auto bytes = [&](std::size_t k)
+    { return resume && k < resume->csvBytes.size() ? std::optional(resume->csvBytes[k]) : std::nullopt; };
+    if (!(bytes(0) && bodies_.resume(directory / "bodies.csv", *bytes(0))))
+    {
+        bodies_.open(directory / "bodies.csv");
+        bodies_.stream() << "time,body,name,x,y,vx,vy\n";
+        bodies_.flush();
+    }
+    if (!(bytes(1) && energy_.resume(directory / "energy.csv", *bytes(1))))
+    {
+        energy_.open(directory / "energy.csv");
+        energy_.stream() << "time,kinetic,strain,gravity,friction_work,normal_damping_work\n";
+        energy_.flush();
+    }
+    thermo_.emplace(directory, thermoColumns(), bytes(2));
+}
+
+OutputWriter::Resume OutputWriter::resumeState()
+{
+    return {frameTimes_, {bodies_.size(), energy_.size(), thermo_->size()}};
+}
+
+void OutputWriter::writePvd()
+{
+    std::string series;
+    for (std::size_t k = 0; k < frameTimes_.size(); ++k)
+        if (listed_[k])
+        {
+            series += "<DataSet timestep=\"";
+            io::appendNumber(series, frameTimes_[k]);
+            series += "\" file=\"" + frameName(k) + "\"/>\n";
+        }
+    io::AtomicFile pvd(directory_ / "series.pvd");
+    pvd.stream() << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+                 << series << "</Collection>\n</VTKFile>\n";
+    pvd.commit();
 }
 
 void OutputWriter::write(const World& world, Real time)
 {
     if (vtk_)
-    {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%05zu.vtu", frames_);
-        writeVtu(world, directory_ / name, format_);
-        series_ += "<DataSet timestep=\"";
-        io::appendNumber(series_, time);
-        series_ += "\" file=\"" + std::string(name) + "\"/>\n";
-        io::AtomicFile pvd(directory_ / "series.pvd");
-        pvd.stream()
-            << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
-            << series_ << "</Collection>\n</VTKFile>\n";
-        pvd.commit();
-    }
-    ++frames_;
+        writeVtu(world, directory_ / frameName(frameTimes_.size()), format_);
+    frameTimes_.push_back(time);
+    listed_.push_back(true);
+    if (vtk_)
+        writePvd();
     std::string rows;
     for (std::uint32_t b = 0; b < world.bodyCount(); ++b)
     {
@@ -122,12 +161,14 @@ void OutputWriter::write(const World& world, Real time)
     rows += '\n';
     energy_.stream() << rows;
     energy_.flush();
+    recordThermo(*thermo_, world, time);
 }
 
 void OutputWriter::finish()
 {
     bodies_.close();
     energy_.close();
+    thermo_->close();
 }
 
 } // namespace veridem::fdem

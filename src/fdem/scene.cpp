@@ -159,6 +159,11 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
         sim.requirePositive("duration", scene.duration, "s");
         scene.outputInterval = sim.number("output_interval", 0);
         sim.requireNonNegative("output_interval", scene.outputInterval, "s");
+        if (auto interval = sim.optionalNumber("checkpoint_interval"))
+        {
+            sim.requirePositive("checkpoint_interval", *interval, "s");
+            scene.checkpointInterval = *interval;
+        }
         scene.settleTime = sim.number("settle_time", 0);
         sim.requireNonNegative("settle_time", scene.settleTime, "s");
         scene.settings.gravity = gravity.value_or(Vec2{0, -9.81});

@@ -26,6 +26,7 @@ struct Scene
     WorldSettings settings;
     Real duration = 0;                 ///< simulated time after settling [s]
     Real outputInterval = 0;           ///< [s]; 0: first and last state only
+    Real checkpointInterval = 0;       ///< [s] between checkpoints (after the settling); 0: none
     Real settleTime = 0;               ///< [s] run with zero body velocities before t = 0, then impose them
     Real settleNormalDampingRatio = 0; ///< zeta_n during the settling [1]
     bool vtk = true;                   ///< write .vtu frames and series.pvd

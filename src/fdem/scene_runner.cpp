@@ -1,20 +1,25 @@
 #include "fdem/scene_runner.h"
 
 #include "core/error.h"
+#include "fdem/checkpoint.h"
 #include "fdem/output.h"
 #include "fdem/scene.h"
 #include "fdem/time_step.h"
+#include "io/checkpoint_file.h"
+#include "io/run_control.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 namespace veridem::fdem
 {
 
 int runScene(const toml::table& sceneTable, const std::string& sceneFile, const std::filesystem::path& outDir,
-             bool progress, bool allowUnstableTimeStep)
+             bool progress, bool allowUnstableTimeStep, const RunControl& control)
 {
     const Scene scene = readScene(sceneTable, sceneFile);
     World world = buildWorld(scene, scene.settleTime > 0);
@@ -39,9 +44,43 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
             throw InputError(message);
         std::fprintf(stderr, "veridem: warning: %s (running anyway)\n", message);
     }
-    if (scene.settleTime > 0)
+    // The scene file's hash ties a checkpoint to it. A caller with a table of its own (no file)
+    // gets hash 0, and may not ask for checkpoints or a restart.
+    const bool checkpoints = scene.checkpointInterval > 0 || !control.restartFile.empty();
+    const std::uint64_t sceneHash =
+        checkpoints || std::filesystem::is_regular_file(sceneFile) ? io::sceneFileHash(sceneFile) : 0;
+    const auto settleSteps = scene.settleTime > 0
+                                 ? static_cast<std::uint64_t>(std::ceil(scene.settleTime / dt))
+                                 : std::uint64_t(0);
+    const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / dt));
+    const std::uint64_t outputEvery =
+        scene.outputInterval > 0
+            ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(scene.outputInterval / dt)))
+            : totalSteps;
+    const std::uint64_t checkpointEvery =
+        scene.checkpointInterval > 0
+            ? std::max<std::uint64_t>(1,
+                                      static_cast<std::uint64_t>(std::llround(scene.checkpointInterval / dt)))
+            : 0;
+    std::optional<OutputWriter::Resume> resume;
+    Real start = 0;
+    std::uint64_t firstStep = 0; // steps after the settling already done
+    if (!control.restartFile.empty())
     {
-        const auto settleSteps = static_cast<std::uint64_t>(std::ceil(scene.settleTime / dt));
+        const io::CheckpointOutputs saved = readCheckpoint(control.restartFile, world, sceneHash);
+        if (saved.fileBytes.size() != 3 || world.stepCount() < settleSteps ||
+            world.stepCount() - settleSteps > totalSteps)
+            throw InputError("checkpoint '" + control.restartFile + "' is corrupt: its step " +
+                             std::to_string(world.stepCount()) + " or output files do not fit the scene");
+        resume = OutputWriter::Resume{saved.frameTimes, saved.fileBytes};
+        start = saved.timeOrigin;
+        firstStep = world.stepCount() - settleSteps;
+        std::fprintf(stderr, "veridem: restarting from '%s' at step %llu (t = %.9g s)\n",
+                     control.restartFile.c_str(), static_cast<unsigned long long>(firstStep),
+                     world.time() - start);
+    }
+    else if (scene.settleTime > 0)
+    {
         ContactParameters settling = scene.settings.contact;
         settling.normalDampingRatio = scene.settleNormalDampingRatio;
         world.setContactParameters(settling);
@@ -55,21 +94,53 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
             std::fprintf(stderr, "settled for %g s (%llu steps)\n", scene.settleTime,
                          static_cast<unsigned long long>(settleSteps));
     }
-    const Real start = world.time();
-    OutputWriter output(outDir, scene.vtk, io::chooseVtkFormat(scene.vtkFormat, world.nodes().size()));
-    output.write(world, 0);
-    const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / dt));
-    const std::uint64_t outputEvery =
-        scene.outputInterval > 0
-            ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(scene.outputInterval / dt)))
-            : totalSteps;
+    if (!resume)
+        start = world.time();
+    if (control.stopAtStep && *control.stopAtStep <= firstStep)
+        throw InputError("--stop-at-step " + std::to_string(*control.stopAtStep) +
+                         " is not after the start step " + std::to_string(firstStep));
+    OutputWriter output(outDir, scene.vtk, io::chooseVtkFormat(scene.vtkFormat, world.nodes().size()),
+                        resume ? &*resume : nullptr);
+    if (!resume)
+        output.write(world, 0);
+    const std::filesystem::path checkpointPath = outDir / "checkpoint.bin";
+    const auto writeCheckpointNow = [&]
+    {
+        OutputWriter::Resume state = output.resumeState();
+        writeCheckpoint(checkpointPath, world, sceneHash, {state.frameTimes, state.csvBytes, start});
+    };
+    io::stopOnSignals();
     const auto wallStart = std::chrono::steady_clock::now();
     auto lastReport = wallStart;
-    for (std::uint64_t i = 1; i <= totalSteps; ++i)
+    for (std::uint64_t i = firstStep + 1; i <= totalSteps; ++i)
     {
         world.step();
         if (i % outputEvery == 0 || i == totalSteps)
             output.write(world, world.time() - start);
+        bool checkpointed = false;
+        if (checkpointEvery && (i % checkpointEvery == 0 || i == totalSteps))
+        {
+            writeCheckpointNow();
+            checkpointed = true;
+        }
+        const int signal = io::stopSignal();
+        const bool stop = signal || (control.stopAtStep && i == *control.stopAtStep);
+        if (stop && !checkpointed)
+            writeCheckpointNow();
+        if (stop && i < totalSteps)
+        {
+            output.finish();
+            if (progress)
+                std::fprintf(stderr, "\n");
+            std::fprintf(stderr,
+                         "veridem: %s at step %llu of %llu (t = %.9g s); checkpoint written; continue with: "
+                         "veridem run %s --restart %s --out %s\n",
+                         signal ? (std::string("stopped by ") + io::signalName(signal)).c_str() : "stopped",
+                         static_cast<unsigned long long>(i), static_cast<unsigned long long>(totalSteps),
+                         world.time() - start, sceneFile.c_str(), checkpointPath.string().c_str(),
+                         outDir.string().c_str());
+            return signal ? io::kInterruptedBase + signal : 0;
+        }
         if (progress && (i & 1023) == 0)
         {
             const auto now = std::chrono::steady_clock::now();
@@ -77,9 +148,11 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
             {
                 lastReport = now;
                 const double elapsed = std::chrono::duration<double>(now - wallStart).count();
-                const double fraction = static_cast<double>(i) / static_cast<double>(totalSteps);
+                const double fraction =
+                    static_cast<double>(i - firstStep) / static_cast<double>(totalSteps - firstStep);
                 std::fprintf(stderr, "\rt = %.4g s (%.1f %%), ETA %.0f s   ", world.time() - start,
-                             100 * fraction, elapsed * (1 - fraction) / fraction);
+                             100 * static_cast<double>(i) / static_cast<double>(totalSteps),
+                             elapsed * (1 - fraction) / fraction);
             }
         }
     }
@@ -88,8 +161,9 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
         std::fprintf(stderr, "\n");
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     std::printf("fdem2d: %llu steps in %.2f s (%.3g element-steps/s); output in %s\n",
-                static_cast<unsigned long long>(totalSteps), wall,
-                static_cast<double>(totalSteps) * static_cast<double>(world.triangles().size()) / wall,
+                static_cast<unsigned long long>(totalSteps - firstStep), wall,
+                static_cast<double>(totalSteps - firstStep) * static_cast<double>(world.triangles().size()) /
+                    wall,
                 outDir.string().c_str());
     return 0;
 }

@@ -108,6 +108,8 @@ class World
     const std::vector<Couple>& couples() const { return contacts_.couples(); }
 
   private:
+    friend struct CheckpointAccess; // fdem/checkpoint.cpp saves and restores the private state
+
     void refreshActiveLists();
     void computeElementForces();
     bool needsDetection() const;

@@ -391,6 +391,11 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     simulation->requirePositive("duration", scene.duration, "s");
     scene.outputInterval = simulation->number("output_interval", scene.duration / 100);
     simulation->requirePositive("output_interval", scene.outputInterval, "s");
+    if (auto interval = simulation->optionalNumber("checkpoint_interval"))
+    {
+        simulation->requirePositive("checkpoint_interval", *interval, "s");
+        scene.checkpointInterval = *interval;
+    }
     world.gravity = simulation->vec3("gravity", {0, 0, -kStandardGravity});
     if (auto skin = simulation->optionalNumber("skin"))
     {

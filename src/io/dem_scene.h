@@ -19,6 +19,7 @@ struct DemScene
     Real dt = 0;                   // [s]
     Real duration = 0;             // [s]
     Real outputInterval = 0;       // [s]
+    Real checkpointInterval = 0;   // [s] between checkpoints (0: none)
     Real maxOverlapFraction = 0.5; // blow-up threshold: overlap / radius [-]
     Real characteristicSpeed = 1;  // [m/s], sizes the Hertz stiffness in the time-step estimate
     bool writeVtk = true;

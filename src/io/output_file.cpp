@@ -63,6 +63,37 @@ void AppendFile::open(const std::filesystem::path& path)
     errno = 0;
 }
 
+bool AppendFile::resume(const std::filesystem::path& path, std::uint64_t bytes)
+{
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error) || std::filesystem::file_size(path, error) < bytes ||
+        error)
+        return false;
+    std::filesystem::resize_file(path, bytes, error);
+    if (error)
+        throw OutputError("cannot cut '" + path.string() +
+                          "' to its size at the checkpoint: " + error.message());
+    path_ = path;
+    errno = 0;
+    out_.open(path, std::ios::binary | std::ios::in | std::ios::out);
+    if (!out_)
+        failWrite(path, "open");
+    out_.seekp(static_cast<std::streamoff>(bytes));
+    if (!out_)
+        failWrite(path, "seek in");
+    errno = 0;
+    return true;
+}
+
+std::uint64_t AppendFile::size()
+{
+    flush();
+    const auto position = out_.tellp();
+    if (position < 0)
+        failWrite(path_, "tell the size of");
+    return static_cast<std::uint64_t>(position);
+}
+
 void AppendFile::flush()
 {
     out_.flush();

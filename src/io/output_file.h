@@ -3,6 +3,7 @@
 #pragma once
 
 #include <charconv>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -38,6 +39,12 @@ class AppendFile
     AppendFile() = default;
     /// Creates (truncates) `path`; throws OutputError if it cannot.
     void open(const std::filesystem::path& path);
+    /// Continues `path` after a restart: if it exists with at least `bytes` bytes, cuts it to
+    /// `bytes` (dropping what a run wrote after its checkpoint) and opens it to append; returns
+    /// false (nothing opened) if it does not. Throws OutputError if it cannot.
+    bool resume(const std::filesystem::path& path, std::uint64_t bytes);
+    /// The file's size after the last write [bytes] (flushes and checks first).
+    std::uint64_t size();
     std::ofstream& stream() { return out_; }
     /// Flushes and throws OutputError if any write since the last check failed.
     void flush();

@@ -7,13 +7,32 @@
 namespace veridem::io
 {
 
-ParticleRecorder::ParticleRecorder(const std::filesystem::path& directory, bool vtk, VtkFormat format)
+namespace
+{
+std::string vtpName(std::size_t frame)
+{
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%06zu.vtp", frame);
+    return name;
+}
+} // namespace
+
+ParticleRecorder::ParticleRecorder(const std::filesystem::path& directory, bool vtk, VtkFormat format,
+                                   const Resume* resume)
     : directory_(directory), vtk_(vtk), format_(format)
 {
     std::error_code error;
     std::filesystem::create_directories(directory_, error);
     if (error)
         throw OutputError("cannot create output directory '" + directory_.string() + "': " + error.message());
+    if (resume)
+    {
+        frameTimes_ = resume->frameTimes;
+        for (std::size_t k = 0; k < frameTimes_.size(); ++k)
+            listed_.push_back(std::filesystem::is_regular_file(directory_ / vtpName(k), error));
+        if (csv_.resume(directory_ / "particles.csv", resume->csvBytes))
+            return;
+    }
     csv_.open(directory_ / "particles.csv");
     csv_.stream() << "t,id,x,y,z,vx,vy,vz,wx,wy,wz\n";
     csv_.flush();
@@ -48,12 +67,9 @@ void ParticleRecorder::record(const dem::World& world)
     csv_.stream().write(rows.data(), static_cast<std::streamsize>(rows.size()));
     csv_.flush();
     if (vtk_)
-    {
-        char name[64];
-        std::snprintf(name, sizeof name, "particles_%06zu.vtp", frameTimes_.size());
-        writeVtp(world, directory_ / name);
-    }
+        writeVtp(world, directory_ / vtpName(frameTimes_.size()));
     frameTimes_.push_back(world.time);
+    listed_.push_back(true);
     if (vtk_)
         writePvd();
 }
@@ -105,12 +121,12 @@ void ParticleRecorder::writePvd() const
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
     for (std::size_t k = 0; k < frameTimes_.size(); ++k)
     {
-        char name[64];
-        std::snprintf(name, sizeof name, "particles_%06zu.vtp", k);
+        if (!listed_[k])
+            continue;
         text += "<DataSet timestep=\"";
         appendNumber(text, frameTimes_[k]);
         text += "\" file=\"";
-        text += name;
+        text += vtpName(k);
         text += "\"/>\n";
     }
     text += "</Collection>\n</VTKFile>\n";

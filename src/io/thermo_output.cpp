@@ -3,26 +3,20 @@
 namespace veridem::io
 {
 
-ThermoRecorder::ThermoRecorder(const std::filesystem::path& directory)
+ThermoRecorder::ThermoRecorder(const std::filesystem::path& directory,
+                               std::optional<std::uint64_t> resumeBytes)
+    : table_(
+          directory,
+          {"t", "particles", "pair_contacts", "wall_contacts", "kinetic_translational", "kinetic_rotational"},
+          resumeBytes)
 {
-    csv_.open(directory / "thermo.csv");
-    csv_.stream() << "t,particles,pair_contacts,wall_contacts,kinetic_translational,kinetic_rotational\n";
-    csv_.flush();
 }
 
 void ThermoRecorder::record(const dem::World& world)
 {
     const dem::KineticEnergyParts kinetic = dem::kineticEnergyParts(world);
-    std::string row;
-    appendNumber(row, world.time);
-    row += ',' + std::to_string(world.particles.size()) + ',' + std::to_string(world.health.touchingPairs) +
-           ',' + std::to_string(world.health.touchingWalls) + ',';
-    appendNumber(row, kinetic.translational);
-    row += ',';
-    appendNumber(row, kinetic.rotational);
-    row += '\n';
-    csv_.stream() << row;
-    csv_.flush();
+    table_.row({world.time, std::uint64_t(world.particles.size()), std::uint64_t(world.health.touchingPairs),
+                std::uint64_t(world.health.touchingWalls), kinetic.translational, kinetic.rotational});
 }
 
 } // namespace veridem::io

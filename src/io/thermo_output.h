@@ -1,12 +1,14 @@
-// DIR/thermo.csv of a DEM run: one row per output with the time t [s], the number of particles,
-// the contacts touching (particle pairs and particle-wall, from the last force evaluation) and the
-// translational and rotational kinetic energy [J]. Every write is checked (OutputError).
+// DIR/thermo.csv of a DEM run (io/thermo_table.h): one row per output with the time t [s], the
+// number of particles, the contacts touching (particle pairs and particle-wall, from the last force
+// evaluation) and the translational and rotational kinetic energy [J]. Every write is checked
+// (OutputError).
 #pragma once
 
 #include "dem/world.h"
-#include "io/output_file.h"
+#include "io/thermo_table.h"
 
 #include <filesystem>
+#include <optional>
 
 namespace veridem::io
 {
@@ -14,12 +16,15 @@ namespace veridem::io
 class ThermoRecorder
 {
   public:
-    explicit ThermoRecorder(const std::filesystem::path& directory);
+    /// With `resumeBytes` (a restart), continues an existing thermo.csv cut to that size.
+    explicit ThermoRecorder(const std::filesystem::path& directory,
+                            std::optional<std::uint64_t> resumeBytes = std::nullopt);
     void record(const dem::World& world);
-    void close() { csv_.close(); }
+    std::uint64_t size() { return table_.size(); }
+    void close() { table_.close(); }
 
   private:
-    AppendFile csv_;
+    ThermoTable table_;
 };
 
 } // namespace veridem::io

@@ -42,6 +42,22 @@ TEST(FuzzCases, Scene2d)
     EXPECT_GT(replay("scene2d", veridem::fuzz::readScene2d), 0u);
 }
 
+TEST(FuzzCases, Checkpoint3d)
+{
+    // A checkpoint of the fuzz scene is read back (the seed of the fuzz target is one).
+    veridem::io::DemScene scene = veridem::fuzz::checkpointScene();
+    veridem::dem::prepare(scene.world);
+    veridem::dem::advance(scene.world, scene.dt, 1500);
+    const auto path = std::filesystem::temp_directory_path() / "veridem_fuzz_seed_checkpoint.bin";
+    veridem::io::writeDemCheckpoint(path, scene.world, veridem::fuzz::kCheckpointSceneHash,
+                                    {{0.0}, {1, 2}, 0});
+    veridem::io::DemScene restored = veridem::fuzz::checkpointScene();
+    EXPECT_NO_THROW(
+        veridem::io::readDemCheckpoint(path, restored.world, veridem::fuzz::kCheckpointSceneHash));
+    std::filesystem::remove(path);
+    EXPECT_GT(replay("checkpoint3d", veridem::fuzz::readCheckpoint3d), 0u);
+}
+
 TEST(FuzzCases, Msh)
 {
     EXPECT_GT(replay("msh", veridem::fuzz::readMsh), 0u);
