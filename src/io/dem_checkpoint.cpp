@@ -13,6 +13,7 @@ struct CheckpointAccess
     {
         out.value("skin", n.skin);
         out.value("iskn", n.innerSkin);
+        out.value("rech", n.reach);
         out.value("nbRh", std::uint8_t(n.keepRollingHistory));
         out.array("nbFi", n.first);
         out.array("nbSe", n.second);
@@ -42,6 +43,7 @@ struct CheckpointAccess
     {
         in.value("skin", n.skin);
         in.value("iskn", n.innerSkin);
+        in.value("rech", n.reach);
         n.keepRollingHistory = in.value<std::uint8_t>("nbRh") != 0;
         in.array("nbFi", n.first);
         in.array("nbSe", n.second);
