@@ -202,37 +202,48 @@ CheckpointReader::CheckpointReader(std::filesystem::path path, CheckpointEngine 
     file_ = std::fopen(path_.c_str(), "rb");
     if (!file_)
         fail(std::string("cannot be opened: ") + std::strerror(errno));
-    if (size < kHeaderBytes + kTrailerBytes)
-        fail("is truncated (" + std::to_string(size) + " bytes, less than a header and a trailer)");
-    Header header{};
-    if (std::fread(&header, sizeof header, 1, file_) != 1)
-        fail("cannot read the header");
-    if (std::memcmp(header.magic, kMagic, 8) != 0)
-        fail("is not a veridem checkpoint (no VDMCKPT magic)");
-    if (header.byteOrder != kByteOrderMark)
-        fail("was written on a machine of the other byte order");
-    if (header.version != kCheckpointVersion)
-        fail("has format version " + std::to_string(header.version) + ", this veridem reads version " +
-             std::to_string(kCheckpointVersion));
-    if (header.engine != static_cast<std::uint32_t>(engine))
-        fail(std::string("is a checkpoint of a ") + engineName(header.engine) + " scene, not of a " +
-             engineName(static_cast<std::uint32_t>(engine)) + " scene");
-    if (header.zero != 0)
-        fail("is corrupt: its header's reserved word is not 0");
-    if (header.sceneHash != sceneHash)
-        fail("belongs to another scene (the scene file's hash differs; restart with the scene file it "
-             "was written from, unchanged)");
-    Trailer trailer{};
-    if (std::fseek(file_, static_cast<long>(size - kTrailerBytes), SEEK_SET) != 0 ||
-        std::fread(&trailer, sizeof trailer, 1, file_) != 1)
-        fail("cannot read the trailer");
-    if (std::memcmp(trailer.magic, kEndMagic, 8) != 0 ||
-        trailer.payloadBytes != size - kHeaderBytes - kTrailerBytes)
-        fail("is truncated or corrupt (" + std::to_string(size) + " bytes; the trailer does not match)");
-    payloadBytes_ = trailer.payloadBytes;
-    expectedChecksum_ = trailer.checksum;
-    if (std::fseek(file_, static_cast<long>(kHeaderBytes), SEEK_SET) != 0)
-        fail("cannot be read");
+    try
+    {
+        if (size < kHeaderBytes + kTrailerBytes)
+            fail("is truncated (" + std::to_string(size) + " bytes, less than a header and a trailer)");
+        Header header{};
+        if (std::fread(&header, sizeof header, 1, file_) != 1)
+            fail("cannot read the header");
+        if (std::memcmp(header.magic, kMagic, 8) != 0)
+            fail("is not a veridem checkpoint (no VDMCKPT magic)");
+        if (header.byteOrder != kByteOrderMark)
+            fail("was written on a machine of the other byte order");
+        if (header.version != kCheckpointVersion)
+            fail("has format version " + std::to_string(header.version) + ", this veridem reads version " +
+                 std::to_string(kCheckpointVersion));
+        if (header.engine != static_cast<std::uint32_t>(engine))
+            fail(std::string("is a checkpoint of a ") + engineName(header.engine) + " scene, not of a " +
+                 engineName(static_cast<std::uint32_t>(engine)) + " scene");
+        if (header.zero != 0)
+            fail("is corrupt: its header's reserved word is not 0");
+        if (header.sceneHash != sceneHash)
+            fail("belongs to another scene (the scene file's hash differs; restart with the scene file it "
+                 "was written from, unchanged)");
+        Trailer trailer{};
+        if (std::fseek(file_, static_cast<long>(size - kTrailerBytes), SEEK_SET) != 0 ||
+            std::fread(&trailer, sizeof trailer, 1, file_) != 1)
+            fail("cannot read the trailer");
+        if (std::memcmp(trailer.magic, kEndMagic, 8) != 0 ||
+            trailer.payloadBytes != size - kHeaderBytes - kTrailerBytes)
+            fail("is truncated or corrupt (" + std::to_string(size) + " bytes; the trailer does not match)");
+        payloadBytes_ = trailer.payloadBytes;
+        expectedChecksum_ = trailer.checksum;
+        if (std::fseek(file_, static_cast<long>(kHeaderBytes), SEEK_SET) != 0)
+            fail("cannot be read");
+    }
+    catch (...)
+    {
+        // (A constructor that throws runs no destructor: close the file here, or every refused
+        // checkpoint leaks a descriptor.)
+        std::fclose(file_);
+        file_ = nullptr;
+        throw;
+    }
 }
 
 CheckpointReader::~CheckpointReader()
