@@ -51,7 +51,7 @@ struct Sample
 };
 
 /// Runs the protocol with the given normal model; returns (overlap, force) after every step.
-std::vector<Sample> drive(dem::NormalModel model, const Protocol& pr, const CaseContext& context)
+std::vector<Sample> drive(dem::NormalModel model, const Protocol& pr)
 {
     Material m;
     m.name = "adhesive";
@@ -91,7 +91,6 @@ std::vector<Sample> drive(dem::NormalModel model, const Protocol& pr, const Case
         if (!loading && -overlap > pr.endGap)
             break;
     }
-    (void)context;
     return samples;
 }
 
@@ -114,7 +113,7 @@ Real jkrRadiusByBisection(Real modulus, Real rStar, Real w, Real overlap)
 CaseResult run(dem::NormalModel model)
 {
     const Protocol pr;
-    const std::vector<Sample> samples = drive(model, pr, CaseContext{});
+    const std::vector<Sample> samples = drive(model, pr);
     const Real eStar = pr.youngsModulus / (2 * (1 - pr.poissonRatio * pr.poissonRatio));
     const Real rStar = 0.5 * pr.radius;
     const Real w = 2 * pr.surfaceEnergy;
