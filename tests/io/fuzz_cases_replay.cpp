@@ -55,6 +55,12 @@ TEST(FuzzCases, Checkpoint3d)
     EXPECT_NO_THROW(
         veridem::io::readDemCheckpoint(path, restored.world, veridem::fuzz::kCheckpointSceneHash));
     std::filesystem::remove(path);
+    // The stored seed must stay a valid checkpoint of the current format (a stale seed would start
+    // the fuzzer from refused inputs only); regenerate it from the checkpoint written above.
+    veridem::io::DemScene fromSeed = veridem::fuzz::checkpointScene();
+    EXPECT_NO_THROW(veridem::io::readDemCheckpoint(std::filesystem::path(VERIDEM_FUZZ_CASES) /
+                                                       "checkpoint3d" / "valid_seed.bin",
+                                                   fromSeed.world, veridem::fuzz::kCheckpointSceneHash));
     EXPECT_GT(replay("checkpoint3d", veridem::fuzz::readCheckpoint3d), 0u);
 }
 
