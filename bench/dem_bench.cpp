@@ -19,6 +19,7 @@
 // long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
 #include "core_probe.h"
 #include "dem/forces.h"
+#include "exec/isa.h"
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
@@ -354,7 +355,7 @@ int run(int argc, char** argv)
             particleBytes / static_cast<double>(n),
             static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
             static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
-        std::printf("  contact kernel %s (VERIDEM_KERNEL=avx2|portable to choose)\n", laneKernelName());
+        std::printf("  contact kernel %s (VERIDEM_KERNEL=avx2|portable to choose)\n", exec::isaName());
         std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
                     world.neighbors.size(),
                     static_cast<double>(world.neighbors.size()) / static_cast<double>(n),

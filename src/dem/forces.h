@@ -1,10 +1,9 @@
-// Force loops: contact inputs, the contact law, and the per-particle sums in a fixed order
-// (stages 3-5 of the step, world.cpp).
+// The force stages of the step (world.cpp), each summing contacts in a fixed order: stage 3, the
+// pairs (forces.cpp, with pair_kernel.h); stage 4a, the cross-block shares
+// (exec/cross_block_sums.cpp); stage 4b, the walls (wall_forces.cpp).
 #pragma once
 
 #include "dem/world.h"
-
-#include <string>
 
 namespace veridem::dem
 {
@@ -31,21 +30,12 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
 ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
                              Vec3& torque);
 /// wallContactsOf compiled for x86-64-v3 (AVX2; no fused multiply-add, so the same bits): for the
-/// one-particle step's AVX2 variant. Only on a CPU with AVX2 (laneKernelIsAvx2()).
+/// one-particle step's AVX2 variant. Only on a CPU with AVX2 (exec::isAvx2()).
 ContactHealth wallContactsOfAvx2(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
                                  Vec3& torque);
 
 /// Folds per-chunk wall health into world health in chunk order (sets touchingWalls).
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks);
-
-/// The instruction-set variant of the lane contact kernel in use: "avx2" (4 lanes, x86-64-v3) or
-/// "portable" (2 lanes, SSE2). The widest this CPU runs, unless the environment variable
-/// VERIDEM_KERNEL names another. All variants give the same bits.
-const char* laneKernelName();
-/// laneKernelName() is "avx2" (a pointer comparison: cheap enough to ask every step).
-bool laneKernelIsAvx2();
-/// Selects a variant by name (tests, benchmarks); false if unknown or this CPU cannot run it.
-bool selectLaneKernel(const std::string& name);
 
 /// Stages 3 and 4 for all particles, serially (no kick): the initial evaluation.
 void computeForces(World& world, Real dt);

@@ -82,7 +82,7 @@ inline Motion kickDriftRange(ParticleStore& p, const Vec3& gravity, Real dt,
 }
 
 /// kickDriftRange in four AVX2 lanes (integrate.cpp): the same operations in the same order, so
-/// the same bits. Only on a CPU with AVX2 (laneKernelName() == "avx2").
+/// the same bits. Only on a CPU with AVX2 (exec::isaName() == "avx2").
 Motion kickDriftLanes(ParticleStore& p, const Vec3& gravity, Real dt, NeighborList::MotionReference reference,
                       std::size_t begin, std::size_t end);
 

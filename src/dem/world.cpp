@@ -24,6 +24,7 @@
 #include "dem/forces.h"
 #include "dem/integrate.h"
 #include "dem/lanes.h"
+#include "exec/isa.h"
 
 #include <algorithm>
 #include <chrono>
@@ -245,8 +246,7 @@ Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
 /// and there are at least four particles (one ball keeps the scalar loop).
 bool integrationInLanes(const World& world)
 {
-    return world.particles.size() >= 4 && world.batchedContactKernel &&
-           std::strcmp(laneKernelName(), "avx2") == 0;
+    return world.particles.size() >= 4 && world.batchedContactKernel && exec::isAvx2();
 }
 
 /// step() for a world of one particle (a single-ball verification run): the same stages in the
@@ -400,7 +400,7 @@ void step(World& world, Real dt)
     {
         // The stages below for one particle, its state in registers; in AVX2 encodings when the
         // lane kernel is (the same bits either way; VERIDEM_KERNEL=portable selects the other).
-        if (laneKernelIsAvx2())
+        if (exec::isAvx2())
             stepOneParticleAvx2(world, dt);
         else
             stepOneParticlePortable(world, dt);

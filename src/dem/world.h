@@ -2,7 +2,7 @@
 #pragma once
 
 #include "core/vec3.h"
-#include "dem/block_partition.h"
+#include "dem/exec/block_partition.h"
 #include "dem/materials.h"
 #include "dem/neighbor_list.h"
 #include "dem/particles.h"
@@ -85,7 +85,7 @@ class ThreadBusyTimer
 
 /// Which thread evaluates which block of the pair stage (block_partition.h), balanced by touching
 /// candidates, a cross-block one counting three, in proportion to each thread's measured speed
-/// (forces.cpp, scheduleBlocks and adaptSchedule); recomputed when the candidate sub-list, the
+/// (exec/pair_schedule.h, scheduleBlocks and adaptSchedule); recomputed when the candidate sub-list, the
 /// slots or the thread count change, and moved when the speeds predict a shorter stage.
 struct PairSchedule
 {
@@ -131,7 +131,7 @@ struct World
     PairSchedule pairSchedule;
     PassSchedule passSchedule;
     bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
-                                      // the scalar path, which false selects; forces.cpp)
+                                      // the scalar path, which false selects; pair_kernel.h)
     bool prepared = false;
 
     /// Adds a material; returns its id.

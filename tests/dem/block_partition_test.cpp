@@ -1,7 +1,7 @@
 // The pair stage's blocks are shared among threads in contiguous ranges that cover every block
 // once, in order, with each boundary at the block edge nearest to an equal share of the weight, or
 // to the threads' shares when they are given (their measured speeds).
-#include "dem/block_partition.h"
+#include "dem/exec/block_partition.h"
 
 #include <gtest/gtest.h>
 

@@ -7,6 +7,7 @@
 #include "dem/integrate.h"
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
+#include "exec/isa.h"
 #include "exec/thread_pool.h"
 
 #include <gtest/gtest.h>
@@ -132,7 +133,7 @@ TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
     }
 }
 
-/// The lane contact path (forces.cpp) performs the scalar contact law's operations lane by lane:
+/// The lane contact path (pair_kernel.cpp, wall_forces.cpp) performs the scalar contact law's operations lane by lane:
 /// the state after 1000 steps is the same to the bit with it and without it, for every
 /// instruction-set variant this CPU runs.
 TEST(Determinism, BatchedContactPathMatchesScalarPath)
@@ -141,11 +142,11 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
     scalar.batchedContactKernel = false;
     for (int s = 0; s < 1000; ++s)
         step(scalar, 1e-5);
-    const std::string initial = laneKernelName();
+    const std::string initial = exec::isaName();
     int variants = 0;
     for (const char* variant : {"avx2", "portable"})
     {
-        if (!selectLaneKernel(variant))
+        if (!exec::selectIsa(variant))
             continue; // this CPU cannot run it
         ++variants;
         World batched = jostlingBox(true);
@@ -161,7 +162,7 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
         EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << variant;
     }
     EXPECT_GE(variants, 1); // the portable variant runs everywhere
-    ASSERT_TRUE(selectLaneKernel(initial));
+    ASSERT_TRUE(exec::selectIsa(initial));
 }
 
 /// advance() fuses each step's closing kick with the next step's kick-drift: the same operations,
@@ -209,7 +210,7 @@ TEST(Determinism, AdvanceStopsAfterABadStep)
     EXPECT_GT(packed.health.maxOverlapRatio, 1e-9);
 }
 
-/// The plane-wall pass of the lane path (forces.cpp, planeWallForcesBody) takes each wall's part of
+/// The plane-wall pass of the lane path (wall_forces.cpp, planeWallForcesBody) takes each wall's part of
 /// the gap and surface velocity from a frame made once per call: on a floor that is a finite disk,
 /// rotating about its normal and translating, with particles on and off the disk, it must still
 /// give the scalar path's bits (jostlingBox's walls are infinite and at rest).
@@ -231,10 +232,10 @@ TEST(Determinism, PlaneWallPassMatchesScalarPathOnAMovingDisk)
     };
     const World scalar = movingDisk(false);
     EXPECT_GT(scalar.health.touchingWalls, 0u);
-    const std::string initial = laneKernelName();
+    const std::string initial = exec::isaName();
     for (const char* variant : {"avx2", "portable"})
     {
-        if (!selectLaneKernel(variant))
+        if (!exec::selectIsa(variant))
             continue; // this CPU cannot run it
         const World batched = movingDisk(true);
         EXPECT_TRUE(sameBits(batched.particles.position, scalar.particles.position)) << variant;
@@ -245,7 +246,7 @@ TEST(Determinism, PlaneWallPassMatchesScalarPathOnAMovingDisk)
         EXPECT_EQ(batched.health.touchingWalls, scalar.health.touchingWalls) << variant;
         EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << variant;
     }
-    ASSERT_TRUE(selectLaneKernel(initial));
+    ASSERT_TRUE(exec::selectIsa(initial));
 }
 
 /// Random particle state for the integration loops: n particles with velocities, spins, forces
@@ -270,10 +271,10 @@ ParticleStore randomParticles(std::size_t n, std::mt19937& rng)
 /// non-finite state.
 TEST(Determinism, IntegrationLanesMatchScalarLoops)
 {
-    const std::string variant = laneKernelName();
-    if (!selectLaneKernel("avx2")) // (only to ask whether this CPU runs AVX2)
+    const std::string variant = exec::isaName();
+    if (!exec::selectIsa("avx2")) // (only to ask whether this CPU runs AVX2)
         GTEST_SKIP() << "this CPU has no AVX2";
-    ASSERT_TRUE(selectLaneKernel(variant));
+    ASSERT_TRUE(exec::selectIsa(variant));
     std::mt19937 rng(7);
     const std::size_t n = 23, begin = 3, end = 22; // 19 particles: four groups and 3 left over
     const ParticleStore initial = randomParticles(n, rng);
@@ -333,7 +334,7 @@ TEST(Determinism, IntegrationLanesMatchScalarLoops)
     }
 }
 
-/// The block sums (forces.cpp) add every touching contact exactly once, +F on i and -F on j, with
+/// The block sums (forces.cpp, exec/cross_block_sums.cpp) add every touching contact exactly once, +F on i and -F on j, with
 /// the torques -l_i (n x Ft) and -l_j (n x Ft): they equal a plain serial loop over the slots that
 /// calls the contact law on a copy of each slot's history. Only the order of the sums and the
 /// rounding of 1/d differ, so the tolerance is round-off: 1e-12 of the largest force (torque) in
@@ -483,7 +484,7 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
         {modelMaterial("jkr", N::Jkr, R::None, 1.0), modelMaterial("jkrEpsd", N::Jkr, R::Epsd, 0.5),
          modelMaterial("jkrWall", N::Jkr, R::Viscous)},
         {modelMaterial("dmtEpsd", N::Dmt, R::Epsd, 1.0), modelMaterial("dmt", N::Dmt, R::None, 1.0)}};
-    const std::string initial = laneKernelName();
+    const std::string initial = exec::isaName();
     for (std::size_t c = 0; c < cases.size(); ++c)
         for (bool dish : {false, true})
         {
@@ -502,7 +503,7 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
                 << c; // a comparison of bits is meaningful only for finite states
             for (const char* variant : {"avx2", "portable"})
             {
-                if (!selectLaneKernel(variant))
+                if (!exec::selectIsa(variant))
                     continue; // this CPU cannot run it
                 const World batched = run(true);
                 const std::string what = "case " + std::to_string(c) + (dish ? " with dish " : " ") + variant;
@@ -523,7 +524,7 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
                 EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << what;
             }
         }
-    ASSERT_TRUE(selectLaneKernel(initial));
+    ASSERT_TRUE(exec::selectIsa(initial));
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 // contact history and health are compared bit for bit after thousands of steps.
 #include "dem/forces.h"
 #include "dem/world.h"
+#include "exec/isa.h"
 
 #include <gtest/gtest.h>
 
@@ -82,11 +83,11 @@ void expectSameBitsWithKernel(const Scene& scene, int steps, Real dt, int minTou
 /// is compiled in two (world.cpp: portable, and AVX2 encodings when the lane kernel is "avx2").
 void expectSameBits(const Scene& scene, int steps, Real dt, int minTouchingSteps, const std::string& what)
 {
-    const std::string initial = laneKernelName();
+    const std::string initial = exec::isaName();
     for (const char* variant : {"avx2", "portable"})
-        if (selectLaneKernel(variant)) // (false: this CPU cannot run it)
+        if (exec::selectIsa(variant)) // (false: this CPU cannot run it)
             expectSameBitsWithKernel(scene, steps, dt, minTouchingSteps, what + ", " + variant + " variant");
-    ASSERT_TRUE(selectLaneKernel(initial));
+    ASSERT_TRUE(exec::selectIsa(initial));
 }
 
 Material steel()

@@ -1,4 +1,4 @@
-#include "dem/block_partition.h"
+#include "dem/exec/block_partition.h"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 // the block edge nearest to the thread's share of the weight.
 //
 // The threads need not be equally fast: on a shared machine another tenant can slow one core
-// for seconds at a time. So the shares follow each thread's measured speed (forces.cpp,
+// for seconds at a time. So the shares follow each thread's measured speed (exec/pair_schedule.h,
 // scheduleBlocks): the pair stage times each thread on its own run, and the boundary moves by
 // whole blocks when the speeds predict a shorter stage. No thread takes another's blocks within a
 // step: on a host whose two vCPUs are ~480 ns apart, a block taken every step moves its rows to

@@ -1,0 +1,316 @@
+#include "dem/pair_kernel.h"
+
+#include "dem/contact_law.h"
+#include "dem/exec/lane_memory.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace veridem::dem
+{
+
+namespace
+{
+
+using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_batch.h)
+
+/// The inputs beyond the linear law's of the pair contacts [0, padded) of `b` (R*, the inertias,
+/// the relative angular velocity, the stored rolling spring), as pairContactScalar computes them.
+[[gnu::noinline]] void pairExtraInputs(const World& world, const PairBatch& b, LawBatch& law,
+                                       std::size_t padded)
+{
+    const ParticleStore& p = world.particles;
+    const NeighborList& list = world.neighbors;
+    for (std::size_t m = 0; m < padded; ++m)
+    {
+        const std::uint32_t i = b.i[m], j = b.j[m];
+        const Real ri = b.ri[m], rj = b.rj[m];
+        ContactInput in;
+        in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+        in.angularVelocity = p.angularVelocity[i];
+        in.effectiveRadius = ri * rj / (ri + rj);
+        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
+                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+        law.setRollingInputs(m, in, list.keepRollingHistory ? list.activeRolling[b.candidate[m]] : Vec3{});
+    }
+}
+
+/// lawLanes on four (AVX2) or two lanes, the springs already in the tangent plane (the pair kernel).
+[[gnu::noinline]] VERIDEM_AVX2_TARGET void projectedLawAvx2(LawBatch& b, std::size_t count, Real dt,
+                                                            const LawParams* uniform)
+{
+    lawLanes<Lanes4, true>(b, count, dt, uniform);
+}
+[[gnu::noinline]] void projectedLawPortable(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
+{
+    lawLanes<Lanes2, true>(b, count, dt, uniform);
+}
+
+/// Adds contact q of batch `b` to the sink: force f [N] on i and -f on j, torques ti on i and tj
+/// on j [N m] (vectors (x, y, z, 0)), or j's share to the slot's deferred entry; stores the new
+/// tangential spring [m] and marks the candidate mayBeActive.
+VERIDEM_HOT_INLINE void scatterContact(const PairSink& sink, const PairBatch& b, std::size_t q,
+                                       const Lanes4& f, const Lanes4& ti, const Lanes4& tj,
+                                       const Lanes4& spring)
+{
+    const std::uint32_t k = b.candidate[q], i = b.i[q], j = b.j[q];
+    sink.mayBeActive[k] = 1;
+    std::memcpy(&sink.spring[k].x, &spring, 3 * sizeof(double)); // x, y, z of (x, y, z, 0)
+    addInto(&sink.force[i].x, f);
+    addInto(&sink.torque[i].x, ti);
+    const std::uint32_t d = sink.deferredIndex[k];
+    if (d == NeighborList::kInBlock)
+    {
+        subtractFrom(&sink.force[j].x, f);
+        addInto(&sink.torque[j].x, tj);
+    }
+    else
+    {
+        // -f in x, y, z (a sign flip, as the scalar path's); the padding stays +0.
+        const Index4 flipXyz = {INT64_MIN, INT64_MIN, INT64_MIN, 0};
+        store(&sink.deferred[d].force.x, reinterpret_cast<Lanes4>(reinterpret_cast<Index4>(f) ^ flipXyz));
+        store(&sink.deferred[d].torque.x, tj);
+    }
+}
+
+/// Evaluates the touching contacts [0, count) of `b` (count <= kBatch; slot, i and j collected by
+/// the caller; the law batchable) and adds them into
+/// the sink in lane order, exactly as the scalar path does. `uniform`: the pair parameters if
+/// there is a single material pair (no table look-up), else null.
+template <class Lanes>
+VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& sink, Real dt,
+                                          std::size_t count, WorstOverlap& worst, PairBatch& b,
+                                          const UniformLaw* uniform)
+{
+    constexpr std::size_t kLanes = kWidth<Lanes>;
+    using LaneMask = decltype(Lanes{} < Lanes{});
+    const ParticleStore& p = world.particles;
+    const NeighborList& list = world.neighbors;
+    const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
+    for (std::size_t m = count; m < padded; ++m)
+    {
+        // Padding lanes repeat the last contact; their results are not written.
+        b.candidate[m] = b.candidate[count - 1];
+        b.i[m] = b.i[count - 1];
+        b.j[m] = b.j[count - 1];
+        for (double* a : {b.sx, b.sy, b.sz, b.ri, b.rj})
+            a[m] = a[count - 1];
+    }
+    const Vec3* const velocity = p.velocity.data();
+    const Vec3* const angularVelocity = p.angularVelocity.data();
+    const Real* const candidateMass = list.activeMass.data();
+    // In three passes over the batch, group by group: the contact inputs, the law, the scatter.
+    // Each pass's body is short enough for the out-of-order core to overlap one group's chain of
+    // divisions and square roots with the next group's (one pass of ~600 instructions a group,
+    // more than the reorder buffer, left them in sequence); the inputs and outputs stay in L1.
+    LawBatch law;
+    alignas(32) double leverIs[kBatch], leverJs[kBatch], minRadii[kBatch];
+    setBatchLaws(law, padded, uniform,
+                 [&](std::size_t m) VERIDEM_INLINE_LAMBDA -> const PairParams&
+                 { return world.pairs(p.material[b.i[m]], p.material[b.j[m]]); });
+    if (law.models != 1u) // another model than linear without rolling: R*, inertias, w_rel
+        pairExtraInputs(world, b, law, padded);
+
+    const Lanes zero = {}, one = zero + 1.0;
+    // No prefetch of the partners' velocity rows: issued directly (two per contact, eight contacts
+    // ahead) they measure no faster on the 20k bed, since the out-of-order core hides those loads;
+    // the selection pass's prefetch of the positions stays. (Never issue a prefetch from a lambda
+    // here: GCC 12 deletes calls of a lambda whose only effect is a prefetch once it is inlined
+    // into an always_inline function.)
+    // 1. Inputs (as pairContactScalar).
+    for (std::size_t m = 0; m < padded; m += kLanes)
+    {
+        const std::uint32_t *const laneI = b.i + m, *const laneJ = b.j + m, *const laneK = b.candidate + m;
+        // x_i - x_j and the radii as the selection pass computed them.
+        const Lanes sx = load<Lanes>(b.sx + m), sy = load<Lanes>(b.sy + m), sz = load<Lanes>(b.sz + m);
+        const Lanes ri = load<Lanes>(b.ri + m), rj = load<Lanes>(b.rj + m);
+        const Lanes touching = ri + rj;
+        const Lanes distance2 = sx * sx + sy * sy + sz * sz;
+        const Lanes distance = laneSqrt(distance2);
+        const LaneMask positive = distance > zero;
+        const Lanes reciprocal = one / (distance * touching); // one division for 1/d and d/(r_i + r_j)
+        const Lanes inverseDistance = touching * reciprocal;
+        const Lanes nx = positive ? sx * inverseDistance : zero;
+        const Lanes ny = positive ? sy * inverseDistance : zero;
+        const Lanes nz = positive ? sz * inverseDistance : one;
+        const Lanes share = positive ? distance * distance * reciprocal : zero;
+        const Lanes leverI = ri * share, leverJ = rj * share;
+        // Particle and slot data straight into lanes (gatherVec3: paired 16-byte loads).
+        const Lanes3<Lanes> wi = gatherVec3<Lanes>(angularVelocity, laneI),
+                            wj = gatherVec3<Lanes>(angularVelocity, laneJ);
+        const Lanes ax = wi.x * leverI + wj.x * leverJ;
+        const Lanes ay = wi.y * leverI + wj.y * leverJ;
+        const Lanes az = wi.z * leverI + wj.z * leverJ;
+        const Lanes3<Lanes> vi = gatherVec3<Lanes>(velocity, laneI), vj = gatherVec3<Lanes>(velocity, laneJ);
+        const Lanes dvx = vi.x - vj.x, dvy = vi.y - vj.y, dvz = vi.z - vj.z;
+        const Lanes3<Lanes> h = gatherVec3<Lanes>(sink.spring, laneK);
+        store(law.nx + m, nx);
+        store(law.ny + m, ny);
+        store(law.nz + m, nz);
+        store(law.overlap + m, touching - distance);
+        store(law.rvx + m, dvx - (ay * nz - az * ny));
+        store(law.rvy + m, dvy - (az * nx - ax * nz));
+        store(law.rvz + m, dvz - (ax * ny - ay * nx));
+        store(law.mass + m, gather<Lanes>(candidateMass, laneK)); // m_i m_j / (m_i + m_j)
+        // The spring rotated into the tangent plane here rather than in the law pass (its
+        // division and square root): the divider work of the two passes is then about even
+        // (two square roots and two divisions here, one division there, per group).
+        const V3<Lanes> projected = projectSpring<Lanes>({h.x, h.y, h.z}, {nx, ny, nz});
+        store(law.hx + m, projected.x);
+        store(law.hy + m, projected.y);
+        store(law.hz + m, projected.z);
+        store(leverIs + m, leverI);
+        store(leverJs + m, leverJ);
+        store(minRadii + m, rj < ri ? rj : ri);
+    }
+
+    // The JKR touch criterion's state: formed or not at the previous step.
+    law.formedKnown = law.jkr;
+    if (law.jkr)
+        for (std::size_t m = 0; m < padded; ++m)
+            law.formed[m] = sink.mayBeActive[b.candidate[m]];
+
+    // 2. The law (lawLanes, as the wall contacts').
+    // (In its own function, as the walls': inlined, its register pressure spills the other passes.)
+    if constexpr (kWidth<Lanes> == 4)
+        projectedLawAvx2(law, padded, dt, uniform ? &uniform->params : nullptr);
+    else
+        projectedLawPortable(law, padded, dt, uniform ? &uniform->params : nullptr);
+
+    // 3. Forces and torques, scattered in lane (= slot) order; the health record. Compiled with and
+    // without rolling torques (kRolling), so that the common case carries none of their work.
+    const auto scatter = [&]<bool kRolling>() VERIDEM_INLINE_LAMBDA
+    {
+        for (std::size_t m = 0; m < padded; m += kLanes)
+        {
+            const Lanes nx = load<Lanes>(law.nx + m), ny = load<Lanes>(law.ny + m),
+                        nz = load<Lanes>(law.nz + m);
+            const Lanes normalForce = load<Lanes>(law.normalForce + m), ftx = load<Lanes>(law.ftx + m),
+                        fty = load<Lanes>(law.fty + m), ftz = load<Lanes>(law.ftz + m);
+            const Lanes leverI = load<Lanes>(leverIs + m), leverJ = load<Lanes>(leverJs + m);
+            const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
+            // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j (rolling = +0 without
+            // a rolling model, so -rolling = -0, as the scalar path's).
+            const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
+            Lanes rx = zero, ry = zero, rz = zero;
+            if constexpr (kRolling)
+            {
+                rx = load<Lanes>(law.torqueX + m);
+                ry = load<Lanes>(law.torqueY + m);
+                rz = load<Lanes>(law.torqueZ + m);
+            }
+            const Lanes tix = rx - leverI * ttx, tiy = ry - leverI * tty, tiz = rz - leverI * ttz;
+            const Lanes tjx = -rx - leverJ * ttx, tjy = -ry - leverJ * tty, tjz = -rz - leverJ * ttz;
+
+            // Scatter: one (x, y, z, 0) vector per contact and sum.
+            Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
+            transpose(fx, fy, fz, force);
+            transpose(tix, tiy, tiz, torqueI);
+            transpose(tjx, tjy, tjz, torqueJ);
+            transpose(load<Lanes>(law.springX + m), load<Lanes>(law.springY + m),
+                      load<Lanes>(law.springZ + m), spring);
+            const std::size_t lanes = std::min(kLanes, count - m);
+            if (kRolling && sink.rolling)
+                for (std::size_t l = 0; l < lanes; ++l)
+                    sink.rolling[b.candidate[m + l]] = {law.rollingX[m + l], law.rollingY[m + l],
+                                                        law.rollingZ[m + l]};
+            if (lanes == kLanes) // (a constant trip count: unrolled, every lane index a constant)
+            {
+#pragma GCC unroll 4
+                for (std::size_t l = 0; l < kLanes; ++l)
+                    scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
+            }
+            else
+                for (std::size_t l = 0; l < lanes; ++l)
+                    scatterContact(sink, b, m + l, force[l], torqueI[l], torqueJ[l], spring[l]);
+
+            // The health record, in lane order. One comparison first: the running ratio only grows,
+            // so a lane that does not exceed it now cannot exceed it after an earlier lane's update.
+            const Lanes overlap = load<Lanes>(law.overlap + m), minRadius = load<Lanes>(minRadii + m);
+            if (anyLane(overlap > worst.ratio * minRadius))
+                for (std::size_t l = 0; l < lanes; ++l)
+                    if (worst.exceededBy(overlap[l], minRadius[l]))
+                        worst = {overlap[l] / minRadius[l], b.i[m + l], true};
+        }
+    };
+    if (law.rolling)
+        scatter.template operator()<true>();
+    else
+        scatter.template operator()<false>();
+    if (law.jkr) // (scatterContact marked every contact formed)
+        for (std::size_t q = 0; q < count; ++q)
+            sink.mayBeActive[b.candidate[q]] = law.formed[q] != 0;
+}
+
+VERIDEM_AVX2_TARGET void pairContactsAvx2(const World& world, const PairSink& sink, Real dt,
+                                          std::size_t count, WorstOverlap& worst, PairBatch& b,
+                                          const UniformLaw* uniform)
+{
+    pairContactsLanes<Lanes4>(world, sink, dt, count, worst, b, uniform);
+}
+
+void pairContactsPortable(const World& world, const PairSink& sink, Real dt, std::size_t count,
+                          WorstOverlap& worst, PairBatch& b, const UniformLaw* uniform)
+{
+    pairContactsLanes<Lanes2>(world, sink, dt, count, worst, b, uniform);
+}
+
+} // namespace
+
+PairKernel pairKernelFor(exec::Isa isa)
+{
+    return isa == exec::Isa::Avx2 ? pairContactsAvx2 : pairContactsPortable;
+}
+
+/// Touching candidate k through the general contact law (any model), added into the sink.
+void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
+                       WorstOverlap& worst)
+{
+    const ParticleStore& p = world.particles;
+    const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
+    const Vec3 separation = p.position[i] - p.position[j];
+    const Real ri = p.radius[i], rj = p.radius[j];
+    const Real touching = ri + rj;
+    const Real distance2 = lengthSquared(separation);
+    const PairParams& params = world.pairs(p.material[i], p.material[j]);
+    const ExtraInputs extra = extraInputsFor(params);
+    const Real distance = std::sqrt(distance2);
+    const Real reciprocal = 1.0 / (distance * touching); // one division for 1/d and d/(r_i + r_j)
+    const Real inverseDistance = touching * reciprocal;
+    ContactInput in;
+    in.normal = distance > 0 ? Vec3{separation.x * inverseDistance, separation.y * inverseDistance,
+                                    separation.z * inverseDistance}
+                             : Vec3{0, 0, 1};
+    in.overlap = touching - distance;
+    const Real share = distance > 0 ? distance * distance * reciprocal : 0.0;
+    const Real leverI = ri * share, leverJ = rj * share;
+    in.relativeVelocity = p.velocity[i] - p.velocity[j] -
+                          cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
+    in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+    in.angularVelocity = p.angularVelocity[i];
+    in.effectiveMass = list.activeMass[k];
+    if (extra.effectiveRadius)
+        in.effectiveRadius = ri * rj / touching;
+    if (extra.spinInertia)
+        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+    if (extra.rollingInertia)
+        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
+                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+
+    ContactHistory history = list.candidateHistory(k);
+    history.formed = sink.mayBeActive[k];
+    const ContactOutput out = evaluateContact(params, in, history, dt);
+    list.setCandidateHistory(k, history);
+    sink.mayBeActive[k] = history.formed != 0;
+
+    const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
+    sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,
+             -out.rollingTorque - leverJ * tangentialTorque);
+
+    const Real minRadius = std::min(ri, rj);
+    if (worst.exceededBy(in.overlap, minRadius))
+        worst = {in.overlap / minRadius, i, true};
+}
+
+} // namespace veridem::dem

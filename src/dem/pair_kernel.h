@@ -1,0 +1,102 @@
+// The pair contacts of the force stage (dem/forces.cpp): each touching candidate's contact frame
+// (unit normal, overlap, lever arms, relative velocity at the contact point) and inputs, the
+// contact law (dem/contact_law.h), and the forces and torques added into the particles' sums (or
+// a cross-block share into the slot's deferred entry, dem/neighbor_list.h). In lanes for a batch of
+// contacts (dem/exec/law_batch.h), and one at a time through the general law (pairContactScalar);
+// both give the same bits.
+//
+// Contact lever arms ("contact radius convention", docs/models.md): the contact point divides the
+// centre distance d in the ratio of the radii, l_i = r_i d / (r_i + r_j), so l_i + l_j = d and the
+// tangential force conserves the total angular momentum exactly (with r_i alone it would be
+// violated by delta n x Ft).
+#pragma once
+
+#include "dem/exec/pair_selection.h"
+#include "dem/world.h"
+#include "exec/isa.h"
+
+#include <cstdint>
+
+namespace veridem::dem
+{
+
+struct WorstOverlap // the running largest overlap of a chunk's contacts
+{
+    Real ratio;
+    std::uint32_t particle;
+    bool found;
+
+    /// overlap / radius > ratio, without the division (radius > 0 [m]; overlap [m]); the division
+    /// is paid only when the worst contact changes, which is rare.
+    bool exceededBy(Real overlap, Real radius) const { return overlap > ratio * radius; }
+};
+
+/// Where the pair loop writes. Array bases are held in locals: a byte store (mayBeActive) may alias
+/// anything, so GCC would otherwise reload every vector's pointer after it.
+struct PairSink
+{
+    PaddedVec3* force;                     // per-particle sums [N] (ParticleStore::force)
+    PaddedVec3* torque;                    // [N m]
+    const std::uint32_t* deferredIndex;    // per candidate, or NeighborList::kInBlock
+    NeighborList::DeferredShare* deferred; // on the second particle of a cross-block slot
+    Vec3* spring;                          // tangential spring per candidate [m]
+    Vec3* rolling;                         // rolling spring per candidate [N m], or null if none is kept
+    std::uint8_t* mayBeActive;             // per candidate
+
+    explicit PairSink(World& world)
+        : force(world.particles.force.data()), torque(world.particles.torque.data()),
+          deferredIndex(world.neighbors.activeDeferred.data()), deferred(world.neighbors.deferred.data()),
+          spring(world.neighbors.activeSpring.data()),
+          rolling(world.neighbors.keepRollingHistory ? world.neighbors.activeRolling.data() : nullptr),
+          mayBeActive(world.neighbors.activeMayBeActive.data())
+    {
+    }
+
+    static void add(PaddedVec3& sum, const Vec3& v)
+    {
+        sum.x += v.x;
+        sum.y += v.y;
+        sum.z += v.z;
+    }
+    static void subtract(PaddedVec3& sum, const Vec3& v)
+    {
+        sum.x -= v.x;
+        sum.y -= v.y;
+        sum.z -= v.z;
+    }
+
+    /// Adds the contact of candidate k: force f [N] on i and -f on j, torques ti on i and tj on j
+    /// [N m].
+    void add(std::uint32_t k, std::uint32_t i, std::uint32_t j, const Vec3& f, const Vec3& ti,
+             const Vec3& tj) const
+    {
+        add(force[i], f);
+        add(torque[i], ti);
+        const std::uint32_t d = deferredIndex[k];
+        if (d == NeighborList::kInBlock)
+        {
+            subtract(force[j], f);
+            add(torque[j], tj);
+        }
+        else
+        {
+            deferred[d].force = -f;
+            deferred[d].torque = tj;
+        }
+    }
+};
+
+/// A pair kernel: evaluates the touching contacts [0, count) of a batch (selected by the selection
+/// pass) into the sink in lane order, folding their overlaps into `worst`. `uniform`: the law of a
+/// world with a single material pair, else null (the pair table is read per contact).
+using PairKernel = void (*)(const World&, const PairSink&, Real dt, std::size_t count, WorstOverlap& worst,
+                            batch::PairBatch&, const batch::UniformLaw* uniform);
+
+/// The pair kernel compiled for `isa` (four lanes with AVX2, two portable).
+PairKernel pairKernelFor(exec::Isa isa);
+
+/// Touching candidate k through the general contact law (any model), added into the sink.
+void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
+                       WorstOverlap& worst);
+
+} // namespace veridem::dem

@@ -1,0 +1,404 @@
+// Stage 4b of the step (declared in dem/forces.h): the wall contacts of each particle, in slot
+// order (WallContactList), through the contact law: in lanes a batch at a time (dem/exec/law_batch.h)
+// or one at a time through the general law, with the same bits. A wall contact's frame: the gap of
+// the wall's shape (wallGap, dem/wall_contacts.h), and the wall's surface velocity taken at the
+// contact point of the half step.
+//
+// Lever arm ("contact radius convention", docs/models.md): the undeformed radius r. The
+// contact-point velocity v + w x (-r n) and the torque (-r n) x Ft use the same arm, so the discrete
+// dynamics are exactly those of a rigid ball of radius r rolling on the wall (v = r w when rolling),
+// which is what the analytical solutions assume (2/7 Omega orbit, 5/7 v0 bowling ball).
+#include "dem/contact_law.h"
+#include "dem/exec/law_batch.h"
+#include "dem/forces.h"
+#include "exec/isa.h"
+
+#include <cmath>
+#include <optional>
+
+namespace veridem::dem
+{
+
+namespace
+{
+
+using namespace batch; // LawBatch, kBatch, lawLanes, UniformLaw (dem/exec/law_batch.h)
+
+/// The law of a batch of wall contacts in lanes (a wall is a partner of infinite mass: m* = m).
+using WallLaw = void (*)(LawBatch&, std::size_t, Real, const LawParams*);
+
+[[gnu::noinline]] VERIDEM_AVX2_TARGET void wallLawAvx2(LawBatch& b, std::size_t count, Real dt,
+                                                       const LawParams* uniform)
+{
+    lawLanes<Lanes4, false>(b, count, dt, uniform);
+}
+
+[[gnu::noinline]] void wallLawPortable(LawBatch& b, std::size_t count, Real dt, const LawParams* uniform)
+{
+    lawLanes<Lanes2, false>(b, count, dt, uniform);
+}
+
+/// The contact input of particle i touching `wall` (gap from wallGap), as the contact law takes
+/// it; `arm` is set to the lever arm from the centre to the contact point [m].
+VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const Wall& wall, const WallGap& gap,
+                                                 Real dt, Vec3& arm)
+{
+    const Real r = s.radius;
+    const Vec3 position = s.position, velocity = s.velocity, angularVelocity = s.angularVelocity;
+    ContactInput in;
+    in.normal = gap.normal;
+    in.overlap = gap.overlap;
+    arm = -r * gap.normal; // centre to contact point
+    // The particle's velocities are those of the half step t+dt/2, so the wall's surface
+    // velocity is taken at the contact point of the half step too (x - v dt/2). Using x(t+dt)
+    // would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball orbiting on a
+    // turntable would lose speed at a rate of order Omega v dt.
+    const Vec3 midStepContactPoint = position - (0.5 * dt) * velocity + arm;
+    in.relativeVelocity =
+        velocity + cross(angularVelocity, arm) - wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
+    in.angularVelocity = angularVelocity;
+    in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
+    in.effectiveMass = s.mass;
+    in.effectiveRadius = gap.effectiveRadius;
+    in.spinInertia = 1.0 / s.invInertia;
+    return in;
+}
+
+/// Folds the overlap [m] of a touching wall contact of particle i (radius [m]) into `health`: the
+/// first contact of the largest overlap ratio is kept.
+VERIDEM_HOT_INLINE void foldWallOverlap(std::uint32_t i, Real overlap, Real radius, ContactHealth& health)
+{
+    const Real ratio = overlap / radius;
+    if (ratio > health.maxOverlapRatio)
+        health = {ratio, i, true, health.touching};
+}
+
+/// Adds one wall contact's force and torque to particle i and folds its overlap into `health`.
+void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const Vec3& torque, Real overlap,
+                    ContactHealth& health)
+{
+    p.force[i] += force;
+    p.torque[i] += torque;
+    foldWallOverlap(i, overlap, p.radius[i], health);
+}
+
+/// computeWallForces when every contact takes the lane law: the inputs are computed per contact
+/// (wallContactInput), the law runs in lanes a batch at a time, and the results are added in
+/// slot order, so the sums and bits are those of the scalar path.
+ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::size_t end)
+{
+    ParticleStore& p = world.particles;
+    WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    const std::optional<UniformLaw> single = uniformLaw(world);
+    const UniformLaw* const uniform = single ? &*single : nullptr;
+    const WallLaw kernel = exec::isAvx2() ? wallLawAvx2 : wallLawPortable;
+    LawBatch b;
+    std::size_t m = 0;
+    const auto run = [&]
+    {
+        finishBatchLaws(b, uniform);
+        kernel(b, m, dt, uniform ? &uniform->params : nullptr);
+        for (std::size_t q = 0; q < m; ++q)
+        {
+            const std::uint32_t i = b.particle[q];
+            const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
+            list.setHistory(b.slot[q],
+                            ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
+            const Vec3 arm = -p.radius[i] * normal;
+            addWallContact(p, i, b.normalForce[q] * normal + tangential,
+                           b.rollingTorqueOf(q) + cross(arm, tangential), b.overlap[q], health);
+        }
+        m = 0;
+        b.models = 0;
+    };
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = list.particle[k];
+        const Wall& wall = world.walls[list.wall[k]];
+        const WallGap gap = wallGap(wall, p.position[i], p.radius[i]);
+        if (!gap.touching)
+        {
+            list.setHistory(k, ContactHistory{});
+            continue;
+        }
+        ++health.touching;
+        Vec3 arm;
+        ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
+        b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass,
+                    list.tangentialSpring[k]);
+        if (!uniform)
+            addContactLaw(b, m, world.pairs(p.material[i], wall.material));
+        if (!uniform || uniform->models != 1u) // (as wallContactScalar)
+        {
+            in.rollingInertia = in.spinInertia + p.mass[i] * p.radius[i] * p.radius[i];
+            b.setRollingInputs(m, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
+        }
+        if (++m == kBatch)
+            run();
+    }
+    if (m > 0)
+        run();
+    return health;
+}
+
+/// A plane wall as the plane-wall pass reads it, from wallGap and wallSurfaceVelocity with the
+/// parts that do not depend on the particle computed once, by the same operations: the plane's
+/// current point [m] and unit normal, its disk radius squared [m^2] (if finite), and its surface
+/// velocity field at the half step (velocity [m/s], angular velocity [rad/s], a point of the
+/// rotation axis [m]).
+struct PlaneFrame
+{
+    Vec3 origin, normal;
+    bool finiteDisk;
+    Real disk2;
+    Vec3 velocity, angularVelocity, axis;
+    std::uint32_t material;
+};
+
+constexpr std::size_t kMaxPlaneFrames = 16; // more walls than this take the general pass
+
+/// The frames of `walls` at the half step (timeOffset -dt/2, as wallContactInput); false if some
+/// wall is not a plane or there are more than kMaxPlaneFrames.
+bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
+{
+    if (walls.size() > kMaxPlaneFrames)
+        return false;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+    {
+        const Wall& wall = walls[w];
+        const PlaneShape* plane = std::get_if<PlaneShape>(&wall.shape);
+        if (!plane)
+            return false;
+        const Real timeOffset = -0.5 * dt;
+        frames[w] = {plane->point + wall.displacement,
+                     plane->normal,
+                     std::isfinite(plane->diskRadius),
+                     plane->diskRadius * plane->diskRadius,
+                     wall.motion.velocity,
+                     wall.motion.angularVelocity,
+                     wall.motion.rotationCentre + wall.displacement + timeOffset * wall.motion.velocity,
+                     wall.material};
+    }
+    return true;
+}
+
+/// The inputs beyond the linear law's of the plane-wall contacts [0, count) of `b` (as
+/// wallContactInput and wallContactScalar: a plane's R* is r), out of the hot loop.
+[[gnu::noinline]] void planeExtraInputs(const World& world, const PlaneFrame* frames, LawBatch& b,
+                                        std::size_t count)
+{
+    const ParticleStore& p = world.particles;
+    const WallContactList& list = world.wallContacts;
+    for (std::size_t q = 0; q < count; ++q)
+    {
+        const std::uint32_t i = b.particle[q];
+        const std::size_t k = b.slot[q];
+        const Real r = p.radius[i];
+        ContactInput in;
+        in.relativeAngularVelocity = p.angularVelocity[i] - frames[list.wall[k]].angularVelocity;
+        in.angularVelocity = p.angularVelocity[i];
+        in.effectiveRadius = r;
+        in.spinInertia = 1.0 / p.invInertia[i];
+        in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
+        b.setRollingInputs(q, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
+    }
+}
+
+/// wallForcesInLanes for plane walls (frames from planeFrames), the wall's part of wallGap and
+/// wallSurfaceVelocity taken from its frame: the same operations on the same values, so the same
+/// bits. Inlined into an instruction-set variant below (three-operand AVX encodings of the same
+/// scalar operations for the AVX2 one).
+template <class Lanes>
+VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std::size_t begin,
+                                                     std::size_t end, const PlaneFrame* frames)
+{
+    ParticleStore& p = world.particles;
+    WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    const std::optional<UniformLaw> single = uniformLaw(world);
+    const UniformLaw* const uniform = single ? &*single : nullptr;
+    const bool extraInputs = !uniform || uniform->models != 1u; // some model beyond the linear law's
+    const Vec3* const position = p.position.data();
+    const Vec3* const velocity = p.velocity.data();
+    const Vec3* const angularVelocity = p.angularVelocity.data();
+    const Real* const radius = p.radius.data();
+    const Real* const mass = p.mass.data();
+    PaddedVec3* const force = p.force.data();
+    PaddedVec3* const torque = p.torque.data();
+    const std::uint32_t* const particle = list.particle.data();
+    const std::uint32_t* const wallOf = list.wall.data();
+    Vec3* const spring = list.tangentialSpring.data();
+    const bool rolling = list.keepRollingHistory;
+    const Real halfStep = 0.5 * dt;
+    LawBatch b;
+    std::size_t m = 0;
+    // (Inlined: a lambda's own function would not have the caller's instruction set.)
+    const auto run = [&]() __attribute__((always_inline))
+    {
+        finishBatchLaws(b, uniform);
+        if (extraInputs)
+            planeExtraInputs(world, frames, b, m);
+        // (The law in its own function: inlined here, its register pressure spilled this loop.)
+        if constexpr (kWidth<Lanes> == 4)
+            wallLawAvx2(b, m, dt, uniform ? &uniform->params : nullptr);
+        else
+            wallLawPortable(b, m, dt, uniform ? &uniform->params : nullptr);
+        for (std::size_t q = 0; q < m; ++q)
+        {
+            const std::uint32_t i = b.particle[q];
+            const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
+            if (rolling)
+                list.setHistory(b.slot[q], ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]},
+                                                          b.rollingSpringOf(q)});
+            else
+                spring[b.slot[q]] = {b.springX[q], b.springY[q], b.springZ[q]};
+            const Vec3 arm = -radius[i] * normal;
+            const Vec3 f = b.normalForce[q] * normal + tangential,
+                       t = b.rollingTorqueOf(q) + cross(arm, tangential);
+            force[i].x += f.x;
+            force[i].y += f.y;
+            force[i].z += f.z;
+            torque[i].x += t.x;
+            torque[i].y += t.y;
+            torque[i].z += t.z;
+            foldWallOverlap(i, b.overlap[q], radius[i], health);
+        }
+        m = 0;
+        b.models = 0;
+    };
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = particle[k];
+        const PlaneFrame& frame = frames[wallOf[k]];
+        // wallGap(PlaneShape): the same tests, so the same choice for every value (NaN included).
+        const Vec3 x = position[i];
+        const Real r = radius[i];
+        const Vec3 relative = x - frame.origin;
+        const Real distance = dot(relative, frame.normal);
+        const Real overlap = r - distance;
+        bool touching = !(overlap <= 0) && !(distance < -r);
+        if (touching && frame.finiteDisk)
+            touching = !(lengthSquared(relative - distance * frame.normal) > frame.disk2);
+        if (!touching)
+        {
+            spring[k] = Vec3{};
+            if (rolling)
+                list.setHistory(k, ContactHistory{});
+            continue;
+        }
+        ++health.touching;
+        // wallContactInput.
+        const Vec3 v = velocity[i], w = angularVelocity[i];
+        const Vec3 arm = -r * frame.normal;
+        const Vec3 midStepContactPoint = x - halfStep * v + arm;
+        const Vec3 surfaceVelocity =
+            frame.velocity + cross(frame.angularVelocity, midStepContactPoint - frame.axis);
+        const Vec3 relativeVelocity = v + cross(w, arm) - surfaceVelocity;
+        b.setInputs(m, k, i, frame.normal, overlap, relativeVelocity, mass[i], spring[k]);
+        if (!uniform)
+            addContactLaw(b, m, world.pairs(p.material[i], frame.material));
+        if (++m == kBatch)
+            run();
+    }
+    if (m > 0)
+        run();
+    return health;
+}
+
+VERIDEM_AVX2_TARGET ContactHealth planeWallForcesAvx2(World& world, Real dt, std::size_t begin,
+                                                      std::size_t end, const PlaneFrame* frames)
+{
+    return planeWallForcesBody<Lanes4>(world, dt, begin, end, frames);
+}
+
+ContactHealth planeWallForcesPortable(World& world, Real dt, std::size_t begin, std::size_t end,
+                                      const PlaneFrame* frames)
+{
+    return planeWallForcesBody<Lanes2>(world, dt, begin, end, frames);
+}
+
+/// Wall contact k of the particle whose state is `s`, through the general contact law (any
+/// model): updates the contact's history (cleared if it is not touching); if it touches, adds its
+/// force [N] and torque [N m] to `force` and `torque` and folds it into `health`.
+VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, std::uint32_t i,
+                                          const ParticleState& s, Vec3& force, Vec3& torque,
+                                          ContactHealth& health)
+{
+    WallContactList& list = world.wallContacts;
+    const Wall& wall = world.walls[list.wall[k]];
+    const WallGap gap = wallGap(wall, s.position, s.radius);
+    if (!gap.touching)
+    {
+        list.setHistory(k, ContactHistory{});
+        return;
+    }
+    ++health.touching;
+    const PairParams& params = world.pairs(s.material, wall.material);
+    Vec3 arm;
+    ContactInput in = wallContactInput(s, wall, gap, dt, arm);
+    if (params.rollingModel == RollingModel::Epsd)
+        in.rollingInertia = in.spinInertia + s.mass * s.radius * s.radius;
+
+    ContactHistory history = list.history(k);
+    const ContactOutput out = evaluateContact(params, in, history, dt);
+    list.setHistory(k, history);
+    force += out.force;
+    torque += out.rollingTorque + cross(arm, out.tangentialForce);
+    foldWallOverlap(i, in.overlap, s.radius, health);
+}
+
+} // namespace
+
+ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::size_t end)
+{
+    ParticleStore& p = world.particles;
+    WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    if (list.size() == 0 || list.start.size() != p.size() + 1)
+        return health;
+    if (world.batchedContactKernel)
+    {
+        PlaneFrame frames[kMaxPlaneFrames];
+        if (!planeFrames(world.walls, dt, frames))
+            return wallForcesInLanes(world, dt, begin, end);
+        return exec::isAvx2() ? planeWallForcesAvx2(world, dt, begin, end, frames)
+                              : planeWallForcesPortable(world, dt, begin, end, frames);
+    }
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = list.particle[k];
+        wallContactScalar(world, dt, k, i, particleState(p, i), p.force[i], p.torque[i], health);
+    }
+    return health;
+}
+
+namespace
+{
+/// wallContactsOf's body, inlined into each instruction-set variant below.
+VERIDEM_HOT_INLINE ContactHealth wallContactsOfBody(World& world, Real dt, std::uint32_t i,
+                                                    const ParticleState& s, Vec3& force, Vec3& torque)
+{
+    const WallContactList& list = world.wallContacts;
+    ContactHealth health{0, 0, false, 0};
+    if (list.size() == 0 || list.start.size() != world.particles.size() + 1)
+        return health;
+    for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k)
+        wallContactScalar(world, dt, k, i, s, force, torque, health);
+    return health;
+}
+} // namespace
+
+ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
+                             Vec3& torque)
+{
+    return wallContactsOfBody(world, dt, i, s, force, torque);
+}
+
+VERIDEM_AVX2_TARGET ContactHealth wallContactsOfAvx2(World& world, Real dt, std::uint32_t i,
+                                                     const ParticleState& s, Vec3& force, Vec3& torque)
+{
+    return wallContactsOfBody(world, dt, i, s, force, torque);
+}
+
+} // namespace veridem::dem
