@@ -19,10 +19,10 @@
 // long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
 #include "core_probe.h"
 #include "dem/forces.h"
-#include "exec/isa.h"
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
+#include "exec/isa.h"
 #include "exec/thread_pool.h"
 
 #include <algorithm>
@@ -48,6 +48,7 @@ namespace
 struct Options
 {
     std::string scene = "bed";
+    std::string model = "linear"; // --model: the bed's contact law, "linear" or "hertz" (bedWorld)
     std::string file;
     int tile = 1;
     long steps = 10000;
@@ -61,10 +62,11 @@ struct Options
 
 [[noreturn]] void usage()
 {
-    std::fprintf(stderr,
-                 "usage: veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S]\n"
-                 "                     [--threads T] [--repeat R] [--profile] [--no-sort] [--spin-ns NS]\n"
-                 "       veridem_bench --core-probe   (how much of a CPU core this process gets; no run)\n");
+    std::fprintf(
+        stderr,
+        "usage: veridem_bench [--scene bed|gas|turntable] [--model linear|hertz] [--file XYZ] [--tile N]\n"
+        "                     [--steps S] [--threads T] [--repeat R] [--profile] [--no-sort] [--spin-ns NS]\n"
+        "       veridem_bench --core-probe   (how much of a CPU core this process gets; no run)\n");
     std::exit(2);
 }
 
@@ -95,6 +97,8 @@ Options parse(int argc, char** argv)
         auto count = [&] { return number(1); };
         if (arg == "--scene")
             o.scene = value();
+        else if (arg == "--model")
+            o.model = value();
         else if (arg == "--file")
             o.file = value();
         else if (arg == "--tile")
@@ -118,6 +122,8 @@ Options parse(int argc, char** argv)
     }
     if (o.scene != "bed" && o.scene != "gas" && o.scene != "turntable")
         throw std::runtime_error("--scene: expected bed, gas or turntable, got '" + o.scene + "'");
+    if (o.model != "linear" && o.model != "hertz")
+        throw std::runtime_error("--model: expected linear or hertz, got '" + o.model + "'");
     if (o.file.empty())
         o.file = std::string(VERIDEM_SHARED_BENCH_DIR) +
                  (o.scene == "gas" ? "/random_gas_20k.xyz" : "/settled_bed_20k.xyz");
@@ -194,6 +200,25 @@ World bedWorld(const Options& o)
     m.tangentialStiffnessRatio = 2.0 / 7.0;
     m.normalDampingRate = 5955.04; // e = 0.5 for a pair of equal spheres
     m.friction = 0.5;
+    if (o.model == "hertz")
+    {
+        // Hertz-Mindlin, the same law as bench/lammps/bed_hertz.in (LAMMPS `granular hertz/material`,
+        // tangential `mindlin NULL`, damping `tsuji`, whose eta_n = alpha(e) sqrt(m* (4/3) E* a) is
+        // veridem's 2 sqrt(5/6) beta sqrt(m* 2 E* a) when beta = alpha / sqrt(5); the restitution
+        // here is the one whose beta that is, for Tsuji's alpha(0.5) = 0.34074). E* = E / (2 (1 -
+        // nu^2)) = 2.75e7 Pa between two spheres: the contact stiffness 2 E* sqrt(R* delta) is
+        // ~1000 N/m, the linear bed's kn, at its ~0.5 um overlaps. eta_t = (2/7) eta_n.
+        const double e = 0.5;
+        const double alpha = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * std::pow(e, 3) +
+                             27.467 * std::pow(e, 4) - 18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
+        const double beta = alpha / std::sqrt(5.0);
+        m.normalModel = NormalModel::Hertz;
+        m.youngsModulus = 5e7;
+        m.poissonRatio = 0.3;
+        m.restitution = std::exp(-3.14159265358979 * beta / std::sqrt(1 - beta * beta)); // 0.61608
+        m.normalDampingRate = -1;
+        m.tangentialDampingRatio = 2.0 / 7.0;
+    }
     m.rollingModel = RollingModel::None;
     world.addMaterial(m);
     world.gravity = {0, 0, -9.81};
@@ -310,8 +335,8 @@ int run(int argc, char** argv)
         const double rate = static_cast<double>(n) * static_cast<double>(o.steps) / seconds;
 
         const double peak = peakResidentBytes();
-        std::printf("scene %s  particles %zu  threads %d  steps %ld  dt %g s\n", o.scene.c_str(), n,
-                    o.threads, o.steps, dt);
+        std::printf("scene %s  model %s  particles %zu  threads %d  steps %ld  dt %g s\n", o.scene.c_str(),
+                    single ? "turntable ball" : o.model.c_str(), n, o.threads, o.steps, dt);
         std::printf("  wall time %.3f s (prepare %.3f s)  %.4g particle-steps/s  %.4g steps/s\n", seconds,
                     setupSeconds, rate, static_cast<double>(o.steps) / seconds);
         if (!windows.empty())

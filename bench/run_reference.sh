@@ -2,7 +2,8 @@
 # The measurements of docs/performance.md, in one run so that ratios are fair on a shared
 # machine: for each scene (settled bed, gas) and each thread/rank count (1, 2), veridem, then
 # LAMMPS, then LIGGGHTS (if installed: apt-get install -y lammps liggghts), on the same input; then
-# the 1e6-sphere bed and the one-ball turntable.
+# the bed with Hertz-Mindlin contacts against LAMMPS `pair_style granular`, the 1e6-sphere bed and
+# the one-ball turntable.
 #
 #   bench/run_reference.sh [BUILD_DIR] [STEPS]      (defaults: build/release, 10000)
 #
@@ -104,6 +105,23 @@ for scene in bed gas; do
       echo "   LIGGGHTS after: $("$bench" --core-probe)"
     fi
   done
+done
+# The bed with Hertz-Mindlin contacts (veridem_bench --model hertz; LAMMPS `pair_style granular`
+# with the same law, bench/lammps/bed_hertz.in states the mapping). LAMMPS's granular style runs
+# ~10x slower than gran/hooke/history, so this comparison takes HERTZ_STEPS (default steps / 5).
+hertz_steps=${HERTZ_STEPS:-$((steps / 5))}
+for n in 1 2; do
+  echo "== bed, Hertz-Mindlin, $n thread(s)/rank(s), $hertz_steps steps"
+  "$bench" --scene bed --model hertz --steps "$hertz_steps" --threads "$n" --file "$shared/settled_bed_20k.xyz" \
+    | sed 's/^/   veridem /'
+  if command -v lmp > /dev/null; then
+    echo "   LAMMPS   before: $("$bench" --core-probe)"
+    mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed_hertz.in" -var data "$work/bed.data" \
+      -var steps "$hertz_steps" -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
+    echo "   LAMMPS   $(rate_of_loop "$work/lammps.log") particle-steps/s  ($(grep '^Loop time' "$work/lammps.log"))"
+    echo "   LAMMPS   kinetic energy (trans, rot, total) after $hertz_steps steps: $(awk -v s="$hertz_steps" '$1 == s && NF == 5 {print $3, $4, $5}' "$work/lammps.log")"
+    echo "   LAMMPS   after: $("$bench" --core-probe)"
+  fi
 done
 echo "== 1e6-sphere bed (the 20k bed tiled 7 x 7 = 980,000 spheres), 200 steps, 1 and 2 threads"
 for n in 1 2; do "$bench" --tile 7 --steps 200 --threads "$n" | sed 's/^/   veridem /'; done
