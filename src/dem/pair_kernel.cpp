@@ -1,5 +1,6 @@
 #include "dem/pair_kernel.h"
 
+#include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 #include "dem/exec/lane_memory.h"
 
@@ -84,7 +85,6 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
                                           const UniformLaw* uniform)
 {
     constexpr std::size_t kLanes = kWidth<Lanes>;
-    using LaneMask = decltype(Lanes{} < Lanes{});
     const ParticleStore& p = world.particles;
     const NeighborList& list = world.neighbors;
     const std::size_t padded = (count + kLanes - 1) / kLanes * kLanes;
@@ -112,7 +112,7 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
     if (law.models != 1u) // another model than linear without rolling: R*, inertias, w_rel
         pairExtraInputs(world, b, law, padded);
 
-    const Lanes zero = {}, one = zero + 1.0;
+    const Lanes zero = {};
     // No prefetch of the partners' velocity rows: issued directly (two per contact, eight contacts
     // ahead) they measure no faster on the 20k bed, since the out-of-order core hides those loads;
     // the selection pass's prefetch of the positions stays. (Never issue a prefetch from a lambda
@@ -125,33 +125,22 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         // x_i - x_j and the radii as the selection pass computed them.
         const Lanes sx = load<Lanes>(b.sx + m), sy = load<Lanes>(b.sy + m), sz = load<Lanes>(b.sz + m);
         const Lanes ri = load<Lanes>(b.ri + m), rj = load<Lanes>(b.rj + m);
-        const Lanes touching = ri + rj;
-        const Lanes distance2 = sx * sx + sy * sy + sz * sz;
-        const Lanes distance = laneSqrt(distance2);
-        const LaneMask positive = distance > zero;
-        const Lanes reciprocal = one / (distance * touching); // one division for 1/d and d/(r_i + r_j)
-        const Lanes inverseDistance = touching * reciprocal;
-        const Lanes nx = positive ? sx * inverseDistance : zero;
-        const Lanes ny = positive ? sy * inverseDistance : zero;
-        const Lanes nz = positive ? sz * inverseDistance : one;
-        const Lanes share = positive ? distance * distance * reciprocal : zero;
-        const Lanes leverI = ri * share, leverJ = rj * share;
         // Particle and slot data straight into lanes (gatherVec3: paired 16-byte loads).
         const Lanes3<Lanes> wi = gatherVec3<Lanes>(angularVelocity, laneI),
                             wj = gatherVec3<Lanes>(angularVelocity, laneJ);
-        const Lanes ax = wi.x * leverI + wj.x * leverJ;
-        const Lanes ay = wi.y * leverI + wj.y * leverJ;
-        const Lanes az = wi.z * leverI + wj.z * leverJ;
         const Lanes3<Lanes> vi = gatherVec3<Lanes>(velocity, laneI), vj = gatherVec3<Lanes>(velocity, laneJ);
-        const Lanes dvx = vi.x - vj.x, dvy = vi.y - vj.y, dvz = vi.z - vj.z;
         const Lanes3<Lanes> h = gatherVec3<Lanes>(sink.spring, laneK);
+        const ContactFrameOf<Lanes> f =
+            pairContactFrame<Lanes>({sx, sy, sz}, ri, rj, {vi.x - vj.x, vi.y - vj.y, vi.z - vj.z},
+                                    {wi.x, wi.y, wi.z}, {wj.x, wj.y, wj.z});
+        const Lanes nx = f.normal.x, ny = f.normal.y, nz = f.normal.z;
         store(law.nx + m, nx);
         store(law.ny + m, ny);
         store(law.nz + m, nz);
-        store(law.overlap + m, touching - distance);
-        store(law.rvx + m, dvx - (ay * nz - az * ny));
-        store(law.rvy + m, dvy - (az * nx - ax * nz));
-        store(law.rvz + m, dvz - (ax * ny - ay * nx));
+        store(law.overlap + m, f.overlap);
+        store(law.rvx + m, f.relativeVelocity.x);
+        store(law.rvy + m, f.relativeVelocity.y);
+        store(law.rvz + m, f.relativeVelocity.z);
         store(law.mass + m, gather<Lanes>(candidateMass, laneK)); // m_i m_j / (m_i + m_j)
         // The spring rotated into the tangent plane here rather than in the law pass (its
         // division and square root): the divider work of the two passes is then about even
@@ -160,8 +149,8 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
         store(law.hx + m, projected.x);
         store(law.hy + m, projected.y);
         store(law.hz + m, projected.z);
-        store(leverIs + m, leverI);
-        store(leverJs + m, leverJ);
+        store(leverIs + m, f.leverI);
+        store(leverJs + m, f.leverJ);
         store(minRadii + m, rj < ri ? rj : ri);
     }
 
@@ -269,24 +258,18 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
 {
     const ParticleStore& p = world.particles;
     const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
-    const Vec3 separation = p.position[i] - p.position[j];
     const Real ri = p.radius[i], rj = p.radius[j];
     const Real touching = ri + rj;
-    const Real distance2 = lengthSquared(separation);
     const PairParams& params = world.pairs(p.material[i], p.material[j]);
     const ExtraInputs extra = extraInputsFor(params);
-    const Real distance = std::sqrt(distance2);
-    const Real reciprocal = 1.0 / (distance * touching); // one division for 1/d and d/(r_i + r_j)
-    const Real inverseDistance = touching * reciprocal;
+    const ContactFrameOf<Real> f =
+        pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
+                               p.angularVelocity[i], p.angularVelocity[j]);
     ContactInput in;
-    in.normal = distance > 0 ? Vec3{separation.x * inverseDistance, separation.y * inverseDistance,
-                                    separation.z * inverseDistance}
-                             : Vec3{0, 0, 1};
-    in.overlap = touching - distance;
-    const Real share = distance > 0 ? distance * distance * reciprocal : 0.0;
-    const Real leverI = ri * share, leverJ = rj * share;
-    in.relativeVelocity = p.velocity[i] - p.velocity[j] -
-                          cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
+    in.normal = f.normal;
+    in.overlap = f.overlap;
+    const Real leverI = f.leverI, leverJ = f.leverJ;
+    in.relativeVelocity = f.relativeVelocity;
     in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
     in.angularVelocity = p.angularVelocity[i];
     in.effectiveMass = list.activeMass[k];

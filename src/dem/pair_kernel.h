@@ -1,14 +1,9 @@
 // The pair contacts of the force stage (dem/forces.cpp): each touching candidate's contact frame
-// (unit normal, overlap, lever arms, relative velocity at the contact point) and inputs, the
-// contact law (dem/contact_law.h), and the forces and torques added into the particles' sums (or
-// a cross-block share into the slot's deferred entry, dem/neighbor_list.h). In lanes for a batch of
-// contacts (dem/exec/law_batch.h), and one at a time through the general law (pairContactScalar);
-// both give the same bits.
-//
-// Contact lever arms ("contact radius convention", docs/models.md): the contact point divides the
-// centre distance d in the ratio of the radii, l_i = r_i d / (r_i + r_j), so l_i + l_j = d and the
-// tangential force conserves the total angular momentum exactly (with r_i alone it would be
-// violated by delta n x Ft).
+// (pairContactFrame, dem/contact_frame.h: unit normal, overlap, lever arms, relative velocity at the
+// contact point) and inputs, the contact law (dem/contact_law.h), and the forces and torques added
+// into the particles' sums (or a cross-block share into the slot's deferred entry,
+// dem/neighbor_list.h). In lanes for a batch of contacts (dem/exec/law_batch.h), and one at a time
+// through the general law (pairContactScalar): the same templates, so the same bits.
 #pragma once
 
 #include "dem/exec/pair_selection.h"

@@ -1,13 +1,9 @@
 // Stage 4b of the step (declared in dem/forces.h): the wall contacts of each particle, in slot
 // order (WallContactList), through the contact law: in lanes a batch at a time (dem/exec/law_batch.h)
 // or one at a time through the general law, with the same bits. A wall contact's frame: the gap of
-// the wall's shape (wallGap, dem/wall_contacts.h), and the wall's surface velocity taken at the
-// contact point of the half step.
-//
-// Lever arm ("contact radius convention", docs/models.md): the undeformed radius r. The
-// contact-point velocity v + w x (-r n) and the torque (-r n) x Ft use the same arm, so the discrete
-// dynamics are exactly those of a rigid ball of radius r rolling on the wall (v = r w when rolling),
-// which is what the analytical solutions assume (2/7 Omega orbit, 5/7 v0 bowling ball).
+// the wall's shape (wallGap, dem/walls/wall.h) and wallContactFrame (dem/contact_frame.h: the lever
+// arm, the contact-point velocity against the wall's surface velocity at the half step).
+#include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 #include "dem/exec/law_batch.h"
 #include "dem/forces.h"
@@ -43,21 +39,16 @@ using WallLaw = void (*)(LawBatch&, std::size_t, Real, const LawParams*);
 VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const Wall& wall, const WallGap& gap,
                                                  Real dt, Vec3& arm)
 {
-    const Real r = s.radius;
-    const Vec3 position = s.position, velocity = s.velocity, angularVelocity = s.angularVelocity;
+    const ContactFrameOf<Real> frame = wallContactFrame(gap.normal, gap.overlap, s.position, s.velocity,
+                                                        s.angularVelocity, s.radius, surfaceMotion(wall, -0.5 * dt),
+                                                        0.5 * dt);
+    arm = wallArm(s.radius, gap.normal);
     ContactInput in;
     in.normal = gap.normal;
     in.overlap = gap.overlap;
-    arm = -r * gap.normal; // centre to contact point
-    // The particle's velocities are those of the half step t+dt/2, so the wall's surface
-    // velocity is taken at the contact point of the half step too (x - v dt/2). Using x(t+dt)
-    // would add a spurious slip Omega |v| dt/2 on a rotating wall, and a ball orbiting on a
-    // turntable would lose speed at a rate of order Omega v dt.
-    const Vec3 midStepContactPoint = position - (0.5 * dt) * velocity + arm;
-    in.relativeVelocity =
-        velocity + cross(angularVelocity, arm) - wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
-    in.angularVelocity = angularVelocity;
-    in.relativeAngularVelocity = angularVelocity - wall.motion.angularVelocity;
+    in.relativeVelocity = frame.relativeVelocity;
+    in.angularVelocity = s.angularVelocity;
+    in.relativeAngularVelocity = s.angularVelocity - wall.motion.angularVelocity;
     in.effectiveMass = s.mass;
     in.effectiveRadius = gap.effectiveRadius;
     in.spinInertia = 1.0 / s.invInertia;
@@ -105,7 +96,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
             const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
             list.setHistory(b.slot[q],
                             ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
-            const Vec3 arm = -p.radius[i] * normal;
+            const Vec3 arm = wallArm(p.radius[i], normal);
             addWallContact(p, i, b.normalForce[q] * normal + tangential,
                            b.rollingTorqueOf(q) + cross(arm, tangential), b.overlap[q], health);
         }
@@ -142,24 +133,19 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     return health;
 }
 
-/// A plane wall as the plane-wall pass reads it, from wallGap and wallSurfaceVelocity with the
-/// parts that do not depend on the particle computed once, by the same operations: the plane's
-/// current point [m] and unit normal, its disk radius squared [m^2] (if finite), and its surface
-/// velocity field at the half step (velocity [m/s], angular velocity [rad/s], a point of the
-/// rotation axis [m]).
+/// A plane wall as the plane-wall pass reads it: its geometry (planeGeometry) and its motion at the
+/// half step (surfaceMotion at -dt/2, as wallContactInput), made once per step.
 struct PlaneFrame
 {
-    Vec3 origin, normal;
-    bool finiteDisk;
-    Real disk2;
-    Vec3 velocity, angularVelocity, axis;
+    PlaneGeometry geometry;
+    SurfaceMotion motion;
     std::uint32_t material;
 };
 
 constexpr std::size_t kMaxPlaneFrames = 16; // more walls than this take the general pass
 
-/// The frames of `walls` at the half step (timeOffset -dt/2, as wallContactInput); false if some
-/// wall is not a plane or there are more than kMaxPlaneFrames.
+/// The frames of `walls` at the half step; false if some wall is not a plane or there are more
+/// than kMaxPlaneFrames.
 bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
 {
     if (walls.size() > kMaxPlaneFrames)
@@ -170,15 +156,7 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
         const PlaneShape* plane = std::get_if<PlaneShape>(&wall.shape);
         if (!plane)
             return false;
-        const Real timeOffset = -0.5 * dt;
-        frames[w] = {plane->point + wall.displacement,
-                     plane->normal,
-                     std::isfinite(plane->diskRadius),
-                     plane->diskRadius * plane->diskRadius,
-                     wall.motion.velocity,
-                     wall.motion.angularVelocity,
-                     wall.motion.rotationCentre + wall.displacement + timeOffset * wall.motion.velocity,
-                     wall.material};
+        frames[w] = {planeGeometry(*plane, wall.displacement), surfaceMotion(wall, -0.5 * dt), wall.material};
     }
     return true;
 }
@@ -196,7 +174,7 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
         const std::size_t k = b.slot[q];
         const Real r = p.radius[i];
         ContactInput in;
-        in.relativeAngularVelocity = p.angularVelocity[i] - frames[list.wall[k]].angularVelocity;
+        in.relativeAngularVelocity = p.angularVelocity[i] - frames[list.wall[k]].motion.angularVelocity;
         in.angularVelocity = p.angularVelocity[i];
         in.effectiveRadius = r;
         in.spinInertia = 1.0 / p.invInertia[i];
@@ -205,10 +183,10 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
     }
 }
 
-/// wallForcesInLanes for plane walls (frames from planeFrames), the wall's part of wallGap and
-/// wallSurfaceVelocity taken from its frame: the same operations on the same values, so the same
-/// bits. Inlined into an instruction-set variant below (three-operand AVX encodings of the same
-/// scalar operations for the AVX2 one).
+/// wallForcesInLanes for plane walls (frames from planeFrames): the same gap (wallGap of the plane's
+/// geometry) and contact frame (wallContactFrame) with the wall's part made once per step, so the
+/// same operations on the same values and the same bits. Inlined into an instruction-set variant below
+/// (three-operand AVX encodings of the same scalar operations for the AVX2 one).
 template <class Lanes>
 VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std::size_t begin,
                                                      std::size_t end, const PlaneFrame* frames)
@@ -253,7 +231,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
                                                           b.rollingSpringOf(q)});
             else
                 spring[b.slot[q]] = {b.springX[q], b.springY[q], b.springZ[q]};
-            const Vec3 arm = -radius[i] * normal;
+            const Vec3 arm = wallArm(radius[i], normal);
             const Vec3 f = b.normalForce[q] * normal + tangential,
                        t = b.rollingTorqueOf(q) + cross(arm, tangential);
             force[i].x += f.x;
@@ -271,16 +249,10 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     {
         const std::uint32_t i = particle[k];
         const PlaneFrame& frame = frames[wallOf[k]];
-        // wallGap(PlaneShape): the same tests, so the same choice for every value (NaN included).
         const Vec3 x = position[i];
         const Real r = radius[i];
-        const Vec3 relative = x - frame.origin;
-        const Real distance = dot(relative, frame.normal);
-        const Real overlap = r - distance;
-        bool touching = !(overlap <= 0) && !(distance < -r);
-        if (touching && frame.finiteDisk)
-            touching = !(lengthSquared(relative - distance * frame.normal) > frame.disk2);
-        if (!touching)
+        const WallGap gap = wallGap(frame.geometry, x, r);
+        if (!gap.touching)
         {
             spring[k] = Vec3{};
             if (rolling)
@@ -288,14 +260,9 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             continue;
         }
         ++health.touching;
-        // wallContactInput.
-        const Vec3 v = velocity[i], w = angularVelocity[i];
-        const Vec3 arm = -r * frame.normal;
-        const Vec3 midStepContactPoint = x - halfStep * v + arm;
-        const Vec3 surfaceVelocity =
-            frame.velocity + cross(frame.angularVelocity, midStepContactPoint - frame.axis);
-        const Vec3 relativeVelocity = v + cross(w, arm) - surfaceVelocity;
-        b.setInputs(m, k, i, frame.normal, overlap, relativeVelocity, mass[i], spring[k]);
+        const ContactFrameOf<Real> contact = wallContactFrame(gap.normal, gap.overlap, x, velocity[i],
+                                                              angularVelocity[i], r, frame.motion, halfStep);
+        b.setInputs(m, k, i, gap.normal, gap.overlap, contact.relativeVelocity, mass[i], spring[k]);
         if (!uniform)
             addContactLaw(b, m, world.pairs(p.material[i], frame.material));
         if (++m == kBatch)

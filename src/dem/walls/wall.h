@@ -12,6 +12,7 @@
 // geometry itself never changes with time; translation moves the geometry.
 #pragma once
 
+#include "core/hot.h"
 #include "core/vec3.h"
 
 #include <cmath>
@@ -68,27 +69,47 @@ struct WallGap
     Real effectiveRadius = 0; // R* for Hertz/rolling [m]
 };
 
-inline WallGap wallGap(const PlaneShape& plane, const Vec3& offset, const Vec3& x, Real r)
+/// A plane's geometry at one instant, the part of the contact test that does not depend on the
+/// sphere: its current point [m] (PlaneShape::point plus the wall's displacement), unit normal, and
+/// the square of its disk radius [m^2] if it is a finite disk. The plane-wall pass of the force
+/// stage (wall_forces.cpp) makes one per wall per step; wallGap(PlaneShape) makes it per call.
+struct PlaneGeometry
+{
+    Vec3 origin, normal;
+    bool finiteDisk;
+    Real disk2;
+};
+
+inline PlaneGeometry planeGeometry(const PlaneShape& plane, const Vec3& offset)
+{
+    return {plane.point + offset, plane.normal, std::isfinite(plane.diskRadius),
+            plane.diskRadius * plane.diskRadius};
+}
+
+/// The contact of a sphere (centre x, radius r [m]) with a plane: one-sided (a sphere wholly
+/// behind it does not touch), and within the disk if finite.
+VERIDEM_HOT_INLINE WallGap wallGap(const PlaneGeometry& plane, const Vec3& x, Real r)
 {
     WallGap g;
-    const Vec3 relative = x - (plane.point + offset);
+    const Vec3 relative = x - plane.origin;
     const Real distance = dot(relative, plane.normal);
     const Real overlap = r - distance;
-    if (overlap <= 0)
-        return g;
-    if (std::isfinite(plane.diskRadius))
-    {
-        const Vec3 inPlane = relative - distance * plane.normal;
-        if (lengthSquared(inPlane) > plane.diskRadius * plane.diskRadius)
-            return g;
-    }
-    if (distance < -r) // fully behind the plane: not a contact of this one-sided wall
+    // (Tests written so that NaN is never touching.)
+    bool touching = !(overlap <= 0) && !(distance < -r);
+    if (touching && plane.finiteDisk)
+        touching = !(lengthSquared(relative - distance * plane.normal) > plane.disk2);
+    if (!touching)
         return g;
     g.touching = true;
     g.overlap = overlap;
     g.normal = plane.normal;
     g.effectiveRadius = r;
     return g;
+}
+
+inline WallGap wallGap(const PlaneShape& plane, const Vec3& offset, const Vec3& x, Real r)
+{
+    return wallGap(planeGeometry(plane, offset), x, r);
 }
 
 inline WallGap wallGap(const DishShape& dish, const Vec3& offset, const Vec3& x, Real r)
@@ -148,12 +169,34 @@ inline bool wallNear(const Wall& wall, const Vec3& x, Real r, Real reach)
                       wall.shape);
 }
 
+/// A wall's rigid motion at one instant: the velocity field of its material, v(P) = velocity +
+/// angularVelocity x (P - axisPoint) [m/s], with the rotation axis through axisPoint [m].
+struct SurfaceMotion
+{
+    Vec3 velocity;        // [m/s]
+    Vec3 angularVelocity; // [rad/s]
+    Vec3 axisPoint;       // [m]
+};
+
+/// The wall's motion at time offset `timeOffset` [s] from its current position (the rotation axis
+/// moves with the wall's translation).
+inline SurfaceMotion surfaceMotion(const Wall& wall, Real timeOffset = 0)
+{
+    return {wall.motion.velocity, wall.motion.angularVelocity,
+            wall.motion.rotationCentre + wall.displacement + timeOffset * wall.motion.velocity};
+}
+
+/// Velocity of the wall material at point P [m/s].
+VERIDEM_HOT_INLINE Vec3 velocityAt(const SurfaceMotion& m, const Vec3& point)
+{
+    return m.velocity + cross(m.angularVelocity, point - m.axisPoint);
+}
+
 /// Velocity of the wall material at point P [m/s], at time offset `timeOffset` [s] from the
-/// wall's current position (the rotation axis moves with the wall's translation).
+/// wall's current position.
 inline Vec3 wallSurfaceVelocity(const Wall& wall, const Vec3& point, Real timeOffset = 0)
 {
-    const Vec3 axisPoint = wall.motion.rotationCentre + wall.displacement + timeOffset * wall.motion.velocity;
-    return wall.motion.velocity + cross(wall.motion.angularVelocity, point - axisPoint);
+    return velocityAt(surfaceMotion(wall, timeOffset), point);
 }
 
 /// Unit normal of a plane tilted by `tilt` [rad] from +z so that its downhill direction (in the
