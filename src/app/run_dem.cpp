@@ -5,9 +5,11 @@
 #include "core/error.h"
 #include "dem/time_step.h"
 #include "exec/thread_pool.h"
+#include "io/contact_output.h"
 #include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
 #include "io/particle_output.h"
+#include "io/region_output.h"
 #include "io/run_control.h"
 #include "io/thermo_output.h"
 
@@ -131,15 +133,23 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             ? std::max<std::uint64_t>(1, std::llround(scene.checkpointInterval / scene.dt))
             : 0;
     std::optional<io::ParticleRecorder::Resume> resume;
-    std::optional<std::uint64_t> thermoBytes;
+    std::optional<std::uint64_t> thermoBytes, regionBytes;
+    const io::MeasurementOptions& measure = scene.measurements;
+    dem::EnergyLedger ledger; // with `[output] energy = true`: world.observer
+    dem::EnergyLedgerState* const ledgerState = measure.energy ? &ledger.state : nullptr;
+    const std::size_t outputFiles = measure.region ? 3 : 2; // particles.csv, thermo.csv, region.csv
     if (!options.restartFile.empty())
     {
-        const io::CheckpointOutputs saved = io::readDemCheckpoint(options.restartFile, world, sceneHash);
-        if (saved.fileBytes.size() != 2)
+        const io::CheckpointOutputs saved =
+            io::readDemCheckpoint(options.restartFile, world, sceneHash, ledgerState);
+        if (saved.fileBytes.size() != outputFiles)
             throw InputError("checkpoint '" + options.restartFile + "' is corrupt: it records " +
-                             std::to_string(saved.fileBytes.size()) + " output files, a 3D run has 2");
+                             std::to_string(saved.fileBytes.size()) + " output files, this run has " +
+                             std::to_string(outputFiles));
         resume = io::ParticleRecorder::Resume{saved.frameTimes, saved.fileBytes[0]};
         thermoBytes = saved.fileBytes[1];
+        if (measure.region)
+            regionBytes = saved.fileBytes[2];
         if (world.stepCount > totalSteps)
             throw InputError("checkpoint '" + options.restartFile + "' is at step " +
                              std::to_string(world.stepCount) + ", after the scene's last step " +
@@ -154,20 +164,49 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         throw InputError("--stop-at-step " + std::to_string(*options.stopAtStep) +
                          " is not after the start step " + std::to_string(world.stepCount));
 
+    if (measure.energy)
+    {
+        ledger.start(world); // (a restored ledger keeps its state)
+        world.observer = &ledger;
+    }
+
     io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat,
                                   resume ? &*resume : nullptr);
-    io::ThermoRecorder thermo(options.outDir, thermoBytes);
-    if (!resume)
+    io::ThermoRecorder thermo(options.outDir, thermoBytes, measure.energy ? &ledger : nullptr);
+    std::optional<io::ContactRecorder> contacts;
+    if (measure.contacts)
+        contacts.emplace(options.outDir, scene.vtkFormat,
+                         resume ? resume->frameTimes : std::vector<double>{});
+    std::optional<io::RegionRecorder> region;
+    if (measure.region)
+        region.emplace(options.outDir, measure.regionMin, measure.regionMax, regionBytes);
+    const auto recordOutputs = [&]
     {
         recorder.record(world);
-        thermo.record(world);
-    }
+        const std::vector<dem::ContactRecord> now = dem::evaluateContacts(world, 0.0);
+        thermo.record(world, now);
+        if (contacts)
+            contacts->record(world, now);
+        if (region)
+            region->record(world, now);
+    };
+    const auto closeOutputs = [&]
+    {
+        recorder.close();
+        thermo.close();
+        if (region)
+            region->close();
+    };
+    if (!resume)
+        recordOutputs();
     const std::filesystem::path checkpointPath = options.outDir / "checkpoint.bin";
     const auto writeCheckpoint = [&]
     {
-        const std::uint64_t csvBytes = recorder.csvBytes(), thermoSize = thermo.size();
-        io::writeDemCheckpoint(checkpointPath, world, sceneHash,
-                               {recorder.frameTimes(), {csvBytes, thermoSize}, 0});
+        std::vector<std::uint64_t> bytes = {recorder.csvBytes(), thermo.size()};
+        if (region)
+            bytes.push_back(region->size());
+        io::writeDemCheckpoint(checkpointPath, world, sceneHash, {recorder.frameTimes(), bytes, 0},
+                               ledgerState);
     };
     io::stopOnSignals();
 
@@ -211,10 +250,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         else if (runSeconds > 0.05 && chunk > 1)
             chunk /= 2;
         if (s % outputEvery == 0 || s == totalSteps)
-        {
-            recorder.record(world);
-            thermo.record(world);
-        }
+            recordOutputs();
         bool checkpointed = false;
         if (checkpointEvery && (s % checkpointEvery == 0 || s == totalSteps))
         {
@@ -227,8 +263,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             writeCheckpoint();
         if (stop && s < totalSteps)
         {
-            recorder.close();
-            thermo.close();
+            closeOutputs();
             if (options.progress)
                 std::fprintf(stderr, "\r%*s\r", 78, "");
             std::fprintf(stderr,
@@ -255,8 +290,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             }
         }
     }
-    recorder.close();
-    thermo.close();
+    closeOutputs();
     const std::uint64_t stepsRun = totalSteps - firstStep;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.progress)

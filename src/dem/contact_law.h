@@ -15,6 +15,7 @@
 #include "dem/models/rolling.h"
 #include "dem/models/tangential.h"
 
+#include <type_traits>
 #include <vector>
 
 namespace veridem::dem
@@ -273,14 +274,38 @@ inline ContactCoefficients contactCoefficients(const PairParams& p, Real overlap
                         });
 }
 
+/// The law's intermediate terms, reported on request (dem/contact_diagnostics.h: the energy
+/// ledger, the force split). The default NoLawTerms reports nothing: its law compiles to the code
+/// of a law without the report.
+struct NoLawTerms
+{
+};
+template <class T> struct LawTermsOf
+{
+    T elasticNormalForce{};                // spring part of Fn (signed, > 0 repulsive) [N]
+    T dampingNormalForce{};                // dashpot part of Fn, Fn - elastic [N]
+    ContactCoefficientsOf<T> coefficients; // kn, kt [N/m], etaN, etaT [N s/m] at this overlap
+    lanes::Vec3Of<T> tangentialStart{};    // stored spring in the tangent plane before the step [m]
+    lanes::Vec3Of<T> tangentialTrial{};    // the spring with this step's increment, before the cap [m]
+    lanes::Vec3Of<T> tangentialDamping{};  // dashpot part of the tangential force, -etaT vt [N]
+    T rollingStiffness{};                  // EPSD kr [N m/rad] (0 for the other rolling models)
+    lanes::Vec3Of<T> rollingStart{};       // EPSD stored spring torque before the step [N m]
+    lanes::Vec3Of<T> rollingTrial{};       // EPSD spring with this step's increment, before the cap [N m]
+    lanes::Vec3Of<T> rollingDamping{};     // EPSD dashpot part of the rolling torque [N m]
+};
+using LawTerms = LawTermsOf<Real>;
+
 /// The law. kProjected: the stored tangential spring is already in the tangent plane (the pair
-/// kernel rotates it in its input pass).
-template <class Model, class T, bool kProjected = false>
+/// kernel rotates it in its input pass). `terms`: where to report the intermediate terms if
+/// Terms is LawTermsOf<T> (else unused).
+template <class Model, class T, bool kProjected = false, class Terms = NoLawTerms>
 VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const ContactInputOf<T>& in,
-                                                 ContactHistoryOf<T>& history, Real dt)
+                                                 ContactHistoryOf<T>& history, Real dt,
+                                                 [[maybe_unused]] Terms* terms = nullptr)
 {
     using namespace lanes;
     using V = Vec3Of<T>;
+    constexpr bool kReport = !std::is_same_v<Terms, NoLawTerms>;
     const T zero{}, one = broadcast<T>(1.0);
     constexpr bool kAdhesive = isAdhesive(Model::normal);
     const T contactRadius = contactRadiusOf<Model, T>(p, in.overlap, in.effectiveRadius);
@@ -333,6 +358,12 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
     const T normalSpeedEnd =
         (in.effectiveMass * normalSpeed + halfStep * elastic) / (in.effectiveMass + halfStep * dampingWeight);
     const T normalForce = elastic - dampingWeight * normalSpeedEnd;
+    if constexpr (kReport)
+    {
+        terms->elasticNormalForce = elastic;
+        terms->dampingNormalForce = normalForce - elastic;
+        terms->coefficients = c;
+    }
 
     // The load the friction and rolling caps take: Fn, or Fn + 2 F_pulloff with adhesion.
     T load = normalForce;
@@ -343,6 +374,14 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
 
     // 2. Tangential force, capped by mu * load.
     const V tangentialVelocity = in.relativeVelocity - normalSpeed * in.normal;
+    if constexpr (kReport)
+    {
+        terms->tangentialStart =
+            kProjected ? history.tangentialSpring : projectSpring<T>(history.tangentialSpring, in.normal);
+        terms->tangentialTrial = terms->tangentialStart + tangentialVelocity * dt;
+        terms->tangentialDamping = -c.etaT * tangentialVelocity;
+        terms->rollingStart = history.rollingSpring;
+    }
     TangentialResultOf<T> t = coulombSpring<T, kProjected>(c.kt, c.etaT, p.mu, load, history.tangentialSpring,
                                                            in.normal, tangentialVelocity, dt);
     history.tangentialSpring = t.spring;
@@ -369,6 +408,12 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
                 epsdRollingTorqueOf<T>(kr, cr, muR, load, history.rollingSpring, resisted, dt);
             history.rollingSpring = r.spring;
             rollingTorque = r.torque;
+            if constexpr (kReport)
+            {
+                terms->rollingStiffness = kr;
+                terms->rollingTrial = terms->rollingStart - resisted * (kr * dt);
+                terms->rollingDamping = r.torque - r.spring;
+            }
         }
     }
     // A JKR contact that is not formed carries no force and forgets its history.
@@ -395,6 +440,17 @@ VERIDEM_HOT_INLINE ContactOutput evaluateContact(const PairParams& p, const Cont
 {
     return withLawModel(p, [&](auto model) VERIDEM_INLINE_LAMBDA
                         { return contactLaw<decltype(model), Real>(lawParams(p), in, history, dt); });
+}
+
+/// evaluateContact that also reports the law's intermediate terms into `terms` (diagnostics).
+inline ContactOutput evaluateContactReporting(const PairParams& p, const ContactInput& in,
+                                              ContactHistory& history, Real dt, LawTerms& terms)
+{
+    return withLawModel(p,
+                        [&](auto model) {
+                            return contactLaw<decltype(model), Real, false, LawTerms>(lawParams(p), in,
+                                                                                      history, dt, &terms);
+                        });
 }
 
 /// The touch criterion's reach of a pair [m]: the largest separation (r_i + r_j minus the centre

@@ -317,6 +317,8 @@ Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes
     if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
         rebuildContactLists(world);
     clock.lap(&StepProfile::neighbours);
+    if (world.observer) [[unlikely]]
+        world.observer->beforeForces(world, dt);
     computePairForces(world, dt, sumsAreZero); // 3. pair forces at t+dt, summed within blocks
     clock.lap(&StepProfile::pairForces);
     // 4. cross-block and wall contacts, then v(t+dt) (and, if driftNext, v(t+3dt/2), x(t+2dt))
@@ -396,7 +398,7 @@ void step(World& world, Real dt)
     if (!world.prepared)
         prepare(world);
 
-    if (world.particles.size() == 1 && !world.profile.enabled)
+    if (world.particles.size() == 1 && !world.profile.enabled && !world.observer)
     {
         // The stages below for one particle, its state in registers; in AVX2 encodings when the
         // lane kernel is (the same bits either way; VERIDEM_KERNEL=portable selects the other).
@@ -415,6 +417,8 @@ void step(World& world, Real dt)
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
                   lanes);
     stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
+    if (world.observer) [[unlikely]]
+        world.observer->afterStep(world, dt);
 }
 
 std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverlapRatio)
@@ -423,7 +427,8 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
         prepare(world);
     const auto failed = [&]
     { return !world.health.finite || world.health.maxOverlapRatio > maxOverlapRatio; };
-    if (world.particles.size() <= 1) // (one ball has its own step, with nothing to fuse)
+    if (world.particles.size() <= 1 || world.observer) // (one ball has its own step, with nothing to
+                                                       // fuse; an observer sees every step's end)
     {
         for (std::uint64_t s = 0; s < steps; ++s)
         {

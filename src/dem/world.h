@@ -115,6 +115,21 @@ struct PassSchedule
                                // set; tests)
 };
 
+struct World;
+
+/// Sees every step (an energy ledger, energy_ledger.h): beforeForces in the step's state after
+/// the kick-drift, the wall motion and the contact lists' update, just before the force stage
+/// (x(t+dt), v(t+dt/2), the history of t); afterStep once the step is complete (v(t+dt)). With an
+/// observer, step() takes the general path and advance() runs step() by step() (no fused kicks).
+/// An observer reads the world and never changes it, so the bits do not depend on it.
+class StepObserver
+{
+  public:
+    virtual ~StepObserver() = default;
+    virtual void beforeForces(const World& world, Real dt) = 0; // dt [s]
+    virtual void afterStep(const World& world, Real dt) = 0;
+};
+
 struct World
 {
     ParticleStore particles;
@@ -133,6 +148,7 @@ struct World
     bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
                                       // the scalar path, which false selects; pair_kernel.h)
     bool prepared = false;
+    StepObserver* observer = nullptr; // not owned; null: none
 
     /// Adds a material; returns its id.
     std::uint32_t addMaterial(const Material& m);

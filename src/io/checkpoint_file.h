@@ -26,7 +26,7 @@
 namespace veridem::io
 {
 
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2; // 2: the 3D energy ledger records (enLg, enSt)
 
 enum class CheckpointEngine : std::uint32_t
 {

@@ -161,10 +161,48 @@ void readSized(CheckpointReader& in, const char (&tag)[5], std::vector<T>& value
                 std::to_string(n) + " (was a particle file changed?)");
 }
 
+/// The energy ledger's state as one array (the file's order) and back.
+std::vector<Real> ledgerValues(const dem::EnergyLedgerState& s)
+{
+    return {s.started ? 1.0 : 0.0,
+            s.initialEnergy,
+            s.elasticEnergy,
+            s.gravityWork,
+            s.wallWork,
+            s.normalDamping,
+            s.tangentialDamping,
+            s.friction,
+            s.rolling,
+            s.wallPower,
+            s.normalDampingPower,
+            s.tangentialDampingPower,
+            s.rollingPower,
+            s.tangentialSpringEnergy,
+            s.rollingSpringEnergy};
+}
+void setLedgerValues(dem::EnergyLedgerState& s, const std::vector<Real>& v)
+{
+    s.started = v[0] != 0;
+    s.initialEnergy = v[1];
+    s.elasticEnergy = v[2];
+    s.gravityWork = v[3];
+    s.wallWork = v[4];
+    s.normalDamping = v[5];
+    s.tangentialDamping = v[6];
+    s.friction = v[7];
+    s.rolling = v[8];
+    s.wallPower = v[9];
+    s.normalDampingPower = v[10];
+    s.tangentialDampingPower = v[11];
+    s.rollingPower = v[12];
+    s.tangentialSpringEnergy = v[13];
+    s.rollingSpringEnergy = v[14];
+}
+
 } // namespace
 
 void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& world, std::uint64_t sceneHash,
-                        const CheckpointOutputs& outputs)
+                        const CheckpointOutputs& outputs, const dem::EnergyLedgerState* ledger)
 {
     CheckpointWriter out(path, CheckpointEngine::Dem3d, sceneHash);
     out.value("time", world.time);
@@ -205,12 +243,15 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
 
     dem::CheckpointAccess::write(out, world.neighbors);
     dem::CheckpointAccess::write(out, world.wallContacts);
+    out.value("enLg", std::uint8_t(ledger != nullptr));
+    if (ledger)
+        out.array("enSt", ledgerValues(*ledger));
     out.outputs(outputs);
     out.commit();
 }
 
 CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::World& world,
-                                    std::uint64_t sceneHash)
+                                    std::uint64_t sceneHash, dem::EnergyLedgerState* ledger)
 {
     CheckpointReader in(path, CheckpointEngine::Dem3d, sceneHash);
     in.value("time", world.time);
@@ -258,6 +299,18 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
 
     dem::CheckpointAccess::read(in, world.neighbors, n);
     dem::CheckpointAccess::read(in, world.wallContacts, n, walls);
+    const bool hasLedger = in.value<std::uint8_t>("enLg") != 0;
+    if (hasLedger != (ledger != nullptr))
+        in.fail(hasLedger ? "keeps an energy ledger, the scene does not"
+                          : "keeps no energy ledger, the scene does");
+    if (ledger)
+    {
+        std::vector<Real> values;
+        in.array("enSt", values);
+        if (values.size() != ledgerValues(dem::EnergyLedgerState{}).size())
+            in.fail("is corrupt: the energy ledger has " + std::to_string(values.size()) + " values");
+        setLedgerValues(*ledger, values);
+    }
     CheckpointOutputs outputs = in.outputs();
     in.finish();
     world.prepared = true;

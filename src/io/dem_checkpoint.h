@@ -7,11 +7,13 @@
 // (displacement, clock, velocity, angular velocity: an oscillating plate's phase is its clock);
 // the neighbour list (slots, blocks, cross-block entries with their deferred shares, the candidate
 // sub-list with its contact history and may-be-active flags, the positions of the last builds and
-// the rebuild bookkeeping); the wall-contact list with its history; the driver's output counters.
+// the rebuild bookkeeping); the wall-contact list with its history; the energy ledger's
+// accumulators when the run keeps one (dem/energy_ledger.h); the driver's output counters.
 // Not saved: what the scene rebuilds identically (materials, the pair table, wall shapes), the
 // thread schedules (they change which thread computes a block, never the bits) and the profile.
 #pragma once
 
+#include "dem/energy_ledger.h"
 #include "dem/world.h"
 #include "io/checkpoint_file.h"
 
@@ -22,12 +24,13 @@ namespace veridem::io
 
 /// Writes `world` and `outputs` to `path` atomically (CheckpointWriter); throws OutputError.
 void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& world, std::uint64_t sceneHash,
-                        const CheckpointOutputs& outputs);
+                        const CheckpointOutputs& outputs, const dem::EnergyLedgerState* ledger = nullptr);
 
 /// Restores a world built from the same scene (io::readDemScene: materials, pair table, walls and
 /// particles in place) to the checkpoint's state; returns the output counters. Throws InputError
-/// (one line) for another scene, another format version or a truncated or corrupt file.
+/// (one line) for another scene, another format version or a truncated or corrupt file. `ledger`:
+/// where to restore the energy ledger (the run keeps one; null: it does not).
 CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::World& world,
-                                    std::uint64_t sceneHash);
+                                    std::uint64_t sceneHash, dem::EnergyLedgerState* ledger = nullptr);
 
 } // namespace veridem::io

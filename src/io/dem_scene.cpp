@@ -411,6 +411,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     scene.writeVtk = simulation->boolean("vtk", true);
     const std::string vtkFormat = simulation->choice("vtk_format", "auto", {"auto", "ascii", "binary"});
     simulation->finish();
+    scene.measurements = readMeasurementOptions(top);
 
     auto materials = top.arrayOfTables("material");
     if (materials.empty())

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "dem/world.h"
+#include "io/measurement_keys.h"
 #include "io/vtk_xml.h"
 
 #include <toml++/toml.h>
@@ -24,6 +25,7 @@ struct DemScene
     Real characteristicSpeed = 1;  // [m/s], sizes the Hertz stiffness in the time-step estimate
     bool writeVtk = true;
     io::VtkFormat vtkFormat = io::VtkFormat::Ascii; // vtk_format, "auto" resolved by the sphere count
+    MeasurementOptions measurements;                // [output] (io/measurement_keys.h)
 };
 
 /// Builds the scene; `file` is used in messages and to resolve relative particle-file paths.

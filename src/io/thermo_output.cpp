@@ -3,20 +3,56 @@
 namespace veridem::io
 {
 
+namespace
+{
+std::vector<std::string> columns(bool ledger)
+{
+    std::vector<std::string> c = {"t",
+                                  "particles",
+                                  "pair_contacts",
+                                  "wall_contacts",
+                                  "kinetic_translational",
+                                  "kinetic_rotational",
+                                  "elastic"};
+    if (ledger)
+        for (const char* name :
+             {"work_gravity", "work_walls", "dissipated_normal_damping", "dissipated_tangential_damping",
+              "dissipated_friction", "dissipated_rolling", "energy_initial", "energy_residual"})
+            c.push_back(name);
+    return c;
+}
+} // namespace
+
 ThermoRecorder::ThermoRecorder(const std::filesystem::path& directory,
-                               std::optional<std::uint64_t> resumeBytes)
-    : table_(
-          directory,
-          {"t", "particles", "pair_contacts", "wall_contacts", "kinetic_translational", "kinetic_rotational"},
-          resumeBytes)
+                               std::optional<std::uint64_t> resumeBytes, const dem::EnergyLedger* ledger)
+    : ledger_(ledger), table_(directory, columns(ledger != nullptr), resumeBytes)
 {
 }
 
-void ThermoRecorder::record(const dem::World& world)
+void ThermoRecorder::record(const dem::World& world, const std::vector<dem::ContactRecord>& contacts)
 {
     const dem::KineticEnergyParts kinetic = dem::kineticEnergyParts(world);
-    table_.row({world.time, std::uint64_t(world.particles.size()), std::uint64_t(world.health.touchingPairs),
-                std::uint64_t(world.health.touchingWalls), kinetic.translational, kinetic.rotational});
+    Real elastic = 0;
+    if (ledger_)
+        elastic = ledger_->state.elasticEnergy;
+    else
+        for (const dem::ContactRecord& c : contacts)
+            elastic += c.storedEnergy();
+    std::vector<ThermoValue> row = {world.time,
+                                    std::uint64_t(world.particles.size()),
+                                    std::uint64_t(world.health.touchingPairs),
+                                    std::uint64_t(world.health.touchingWalls),
+                                    kinetic.translational,
+                                    kinetic.rotational,
+                                    elastic};
+    if (ledger_)
+    {
+        const dem::EnergyLedgerState& s = ledger_->state;
+        for (const Real v : {s.gravityWork, s.wallWork, s.normalDamping, s.tangentialDamping, s.friction,
+                             s.rolling, s.initialEnergy, ledger_->residual(world)})
+            row.emplace_back(v);
+    }
+    table_.row(row);
 }
 
 } // namespace veridem::io

@@ -1,9 +1,15 @@
 // DIR/thermo.csv of a DEM run (io/thermo_table.h): one row per output with the time t [s], the
 // number of particles, the contacts touching (particle pairs and particle-wall, from the last force
-// evaluation) and the translational and rotational kinetic energy [J]. Every write is checked
-// (OutputError).
+// evaluation), the translational and rotational kinetic energy [J] and the elastic energy stored in
+// the contact springs [J] (normal, tangential and EPSD rolling; dem/contact_diagnostics.h). With an
+// energy ledger (dem/energy_ledger.h, `[output] energy = true`), also its terms [J]: the work of
+// gravity and of the walls, the energy dissipated by normal damping, tangential damping, friction
+// and rolling resistance, the initial energy and the balance residual
+// E_kin + E_elastic - W_gravity - W_walls + D - E_initial. Every write is checked (OutputError).
 #pragma once
 
+#include "dem/contact_diagnostics.h"
+#include "dem/energy_ledger.h"
 #include "dem/world.h"
 #include "io/thermo_table.h"
 
@@ -16,14 +22,20 @@ namespace veridem::io
 class ThermoRecorder
 {
   public:
-    /// With `resumeBytes` (a restart), continues an existing thermo.csv cut to that size.
+    /// With `resumeBytes` (a restart), continues an existing thermo.csv cut to that size. `ledger`
+    /// (not owned; null: none) adds its columns.
     explicit ThermoRecorder(const std::filesystem::path& directory,
-                            std::optional<std::uint64_t> resumeBytes = std::nullopt);
-    void record(const dem::World& world);
+                            std::optional<std::uint64_t> resumeBytes = std::nullopt,
+                            const dem::EnergyLedger* ledger = nullptr);
+    /// One row; `contacts`: the world's contacts now (evaluateContacts(world, 0)), for the elastic
+    /// energy (their stored energy) when there is no ledger (the ledger keeps that of its last
+    /// step, the same).
+    void record(const dem::World& world, const std::vector<dem::ContactRecord>& contacts);
     std::uint64_t size() { return table_.size(); }
     void close() { table_.close(); }
 
   private:
+    const dem::EnergyLedger* ledger_;
     ThermoTable table_;
 };
 

@@ -14,10 +14,10 @@ void ThermoValue::appendTo(std::string& out) const
 }
 
 ThermoTable::ThermoTable(const std::filesystem::path& directory, const std::vector<std::string>& columns,
-                         std::optional<std::uint64_t> resumeBytes)
+                         std::optional<std::uint64_t> resumeBytes, const std::string& name)
     : columns_(columns.size())
 {
-    const std::filesystem::path path = directory / "thermo.csv";
+    const std::filesystem::path path = directory / name;
     if (resumeBytes && csv_.resume(path, *resumeBytes))
         return;
     csv_.open(path);
@@ -30,8 +30,13 @@ ThermoTable::ThermoTable(const std::filesystem::path& directory, const std::vect
 
 void ThermoTable::row(std::initializer_list<ThermoValue> values)
 {
+    row(std::vector<ThermoValue>(values));
+}
+
+void ThermoTable::row(const std::vector<ThermoValue>& values)
+{
     if (values.size() != columns_)
-        throw std::logic_error("thermo.csv: a row of " + std::to_string(values.size()) + " values for " +
+        throw std::logic_error("a table row of " + std::to_string(values.size()) + " values for " +
                                std::to_string(columns_) + " columns");
     std::string text;
     for (const ThermoValue& v : values)

@@ -33,12 +33,14 @@ class ThermoValue
 class ThermoTable
 {
   public:
-    /// Creates DIR/thermo.csv with `columns` as its header; with `resumeBytes` (a restart), continues
+    /// Creates DIR/`name` with `columns` as its header; with `resumeBytes` (a restart), continues
     /// an existing file cut to that size instead if there is one.
     ThermoTable(const std::filesystem::path& directory, const std::vector<std::string>& columns,
-                std::optional<std::uint64_t> resumeBytes = std::nullopt);
+                std::optional<std::uint64_t> resumeBytes = std::nullopt,
+                const std::string& name = "thermo.csv");
     /// Appends a row (as many values as columns) and flushes.
     void row(std::initializer_list<ThermoValue> values);
+    void row(const std::vector<ThermoValue>& values);
     /// The file's size [bytes], for a checkpoint.
     std::uint64_t size() { return csv_.size(); }
     void close() { csv_.close(); }

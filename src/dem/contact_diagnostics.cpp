@@ -1,0 +1,155 @@
+#include "dem/contact_diagnostics.h"
+
+#include "dem/contact_law.h"
+
+#include <cmath>
+#include <limits>
+
+namespace veridem::dem
+{
+
+Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius)
+{
+    if (overlap <= 0)
+        return 0;
+    switch (p.normalModel)
+    {
+    case NormalModel::Linear:
+        return 0.5 * p.kn * overlap * overlap;
+    case NormalModel::Hertz:
+        return 0.4 * hertzElasticForce<Real>(p.effectiveModulus, effectiveRadius, overlap) * overlap;
+    case NormalModel::Dmt:
+        return 0.4 * hertzElasticForce<Real>(p.effectiveModulus, effectiveRadius, overlap) * overlap -
+               dmtPullOffForce<Real>(effectiveRadius, p.workOfAdhesion) * overlap;
+    default: // JKR: not implemented
+        return std::numeric_limits<Real>::quiet_NaN();
+    }
+}
+
+namespace
+{
+
+/// The record of one contact from the law's output and terms; `start` is the history before the
+/// law ran, `history` after. The springs' energies and the slip work: docs/measurements.md.
+ContactRecord recordOf(const PairParams& params, const ContactInput& in, const ContactOutput& out,
+                       const LawTerms& terms, const ContactHistory& history)
+{
+    ContactRecord r;
+    r.normal = in.normal;
+    r.overlap = in.overlap;
+    r.normalForce = out.normalForce * in.normal;
+    r.tangentialForce = out.tangentialForce;
+    r.rollingTorque = out.rollingTorque;
+    r.normalDamping = terms.dampingNormalForce * in.normal;
+    r.tangentialDamping = terms.tangentialDamping;
+    const Real kt = terms.coefficients.kt, kr = terms.rollingStiffness;
+    r.rollingDissipative =
+        params.rollingModel == RollingModel::Epsd ? terms.rollingDamping : out.rollingTorque;
+    r.normalEnergy = normalElasticEnergy(params, in.overlap, in.effectiveRadius);
+    r.tangentialEnergy = 0.5 * kt * lengthSquared(history.tangentialSpring);
+    r.tangentialEnergyBefore = 0.5 * kt * lengthSquared(terms.tangentialStart);
+    // Slip work, midpoint in the spring: kt (xi0 + xi1)/2 . (xi_trial - xi1).
+    r.frictionWork = 0.5 * kt *
+                     dot(terms.tangentialStart + history.tangentialSpring,
+                         terms.tangentialTrial - history.tangentialSpring);
+    if (params.rollingModel == RollingModel::Epsd && kr > 0)
+    {
+        r.rollingEnergy = 0.5 * lengthSquared(history.rollingSpring) / kr;
+        r.rollingEnergyBefore = 0.5 * lengthSquared(terms.rollingStart) / kr;
+        r.rollingSlipWork =
+            0.5 *
+            dot(terms.rollingStart + history.rollingSpring, terms.rollingTrial - history.rollingSpring) / kr;
+    }
+    return r;
+}
+
+} // namespace
+
+std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
+{
+    std::vector<ContactRecord> records;
+    const ParticleStore& p = world.particles;
+    const NeighborList& list = world.neighbors;
+    // Pairs: the input of the force stage's scalar path (forces.cpp, pairContactScalar).
+    for (std::size_t k = 0; k < list.size(); ++k)
+    {
+        const std::uint32_t i = list.first[k], j = list.second[k];
+        const Vec3 separation = p.position[i] - p.position[j];
+        const Real ri = p.radius[i], rj = p.radius[j];
+        const Real touching = ri + rj;
+        const Real distance2 = lengthSquared(separation);
+        if (distance2 >= touching * touching)
+            continue;
+        const PairParams& params = world.pairs(p.material[i], p.material[j]);
+        const Real distance = std::sqrt(distance2);
+        const Real reciprocal = 1.0 / (distance * touching);
+        const Real inverseDistance = touching * reciprocal;
+        ContactInput in;
+        in.normal = distance > 0 ? Vec3{separation.x * inverseDistance, separation.y * inverseDistance,
+                                        separation.z * inverseDistance}
+                                 : Vec3{0, 0, 1};
+        in.overlap = touching - distance;
+        const Real share = distance > 0 ? distance * distance * reciprocal : 0.0;
+        const Real leverI = ri * share, leverJ = rj * share;
+        in.relativeVelocity = p.velocity[i] - p.velocity[j] -
+                              cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
+        in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+        in.angularVelocity = p.angularVelocity[i];
+        in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+        in.effectiveRadius = ri * rj / touching;
+        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
+                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+        ContactHistory history = list.slotHistory(k); // a copy: the world keeps its own
+        history.formed = 1;
+        LawTerms terms;
+        const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
+        ContactRecord r = recordOf(params, in, out, terms, history);
+        r.i = i;
+        r.partner = j;
+        r.leverI = leverI;
+        r.leverJ = leverJ;
+        r.point = p.position[i] - leverI * in.normal;
+        records.push_back(r);
+    }
+    // Walls: the input of forces.cpp's wallContactInput.
+    const WallContactList& walls = world.wallContacts;
+    if (walls.start.size() != p.size() + 1)
+        return records;
+    for (std::size_t k = 0; k < walls.size(); ++k)
+    {
+        const std::uint32_t i = walls.particle[k];
+        const Wall& wall = world.walls[walls.wall[k]];
+        const Real r = p.radius[i];
+        const WallGap gap = wallGap(wall, p.position[i], r);
+        if (!gap.touching)
+            continue;
+        const PairParams& params = world.pairs(p.material[i], wall.material);
+        ContactInput in;
+        in.normal = gap.normal;
+        in.overlap = gap.overlap;
+        const Vec3 arm = -r * gap.normal;
+        const Vec3 midStepContactPoint = p.position[i] - (0.5 * dt) * p.velocity[i] + arm;
+        in.relativeVelocity = p.velocity[i] + cross(p.angularVelocity[i], arm) -
+                              wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
+        in.angularVelocity = p.angularVelocity[i];
+        in.relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
+        in.effectiveMass = p.mass[i];
+        in.effectiveRadius = gap.effectiveRadius;
+        in.spinInertia = 1.0 / p.invInertia[i];
+        in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
+        ContactHistory history = walls.history(k);
+        LawTerms terms;
+        const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
+        ContactRecord rec = recordOf(params, in, out, terms, history);
+        rec.i = i;
+        rec.partner = walls.wall[k];
+        rec.wall = true;
+        rec.leverI = r;
+        rec.point = p.position[i] + arm;
+        records.push_back(rec);
+    }
+    return records;
+}
+
+} // namespace veridem::dem

@@ -1,0 +1,127 @@
+#include "dem/energy_ledger.h"
+
+#include "core/error.h"
+
+namespace veridem::dem
+{
+
+LedgerPowers ledgerPowers(const World& world, const std::vector<ContactRecord>& records)
+{
+    const ParticleStore& p = world.particles;
+    LedgerPowers power;
+    for (const ContactRecord& c : records)
+    {
+        const std::uint32_t i = c.i;
+        Vec3 relativeVelocity, relativeAngularVelocity;
+        if (c.wall)
+        {
+            const Wall& wall = world.walls[c.partner];
+            const Vec3 wallVelocity = wallSurfaceVelocity(wall, c.point);
+            relativeVelocity =
+                p.velocity[i] + cross(p.angularVelocity[i], c.point - p.position[i]) - wallVelocity;
+            relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
+            power.wall += dot(c.normalForce + c.tangentialForce, wallVelocity) +
+                          dot(c.rollingTorque, wall.motion.angularVelocity);
+        }
+        else
+        {
+            const std::uint32_t j = c.partner;
+            relativeVelocity =
+                p.velocity[i] - p.velocity[j] -
+                cross(c.leverI * p.angularVelocity[i] + c.leverJ * p.angularVelocity[j], c.normal);
+            relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+        }
+        power.normalDamping -= dot(c.normalDamping, relativeVelocity);
+        power.tangentialDamping -= dot(c.tangentialDamping, relativeVelocity);
+        power.rolling -= dot(c.rollingDissipative, relativeAngularVelocity);
+    }
+    return power;
+}
+
+void EnergyLedger::start(const World& world)
+{
+    if (state.started)
+        return;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            if (world.pairs(a, b).normalModel == NormalModel::Jkr)
+                throw InputError("the energy ledger ([output] energy = true) does not support the \"jkr\" "
+                                 "model (its elastic energy is not implemented)");
+    const std::vector<ContactRecord> records = evaluateContacts(world, 0.0);
+    state = {};
+    Real elastic = 0;
+    for (const ContactRecord& c : records)
+    {
+        elastic += c.storedEnergy();
+        state.tangentialSpringEnergy += c.tangentialEnergyBefore;
+        state.rollingSpringEnergy += c.rollingEnergyBefore;
+    }
+    const LedgerPowers power = ledgerPowers(world, records);
+    state.started = true;
+    state.elasticEnergy = elastic;
+    state.initialEnergy = kineticEnergy(world) + elastic;
+    state.wallPower = power.wall;
+    state.normalDampingPower = power.normalDamping;
+    state.tangentialDampingPower = power.tangentialDamping;
+    state.rollingPower = power.rolling;
+}
+
+void EnergyLedger::beforeForces(const World& world, Real dt)
+{
+    // Gravity: m g . dx with dx = dt v(t+dt/2), the drift just done (exact: the potential).
+    const ParticleStore& p = world.particles;
+    Real gravityPower = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        gravityPower += p.mass[i] * dot(world.gravity, p.velocity[i]);
+    state.gravityWork += dt * gravityPower;
+    records_ = evaluateContacts(world, dt);
+    // The springs' energy lost before the law's increment: of contacts that opened (their
+    // history is dropped) and by the stiffness's change with the overlap.
+    Real tangentialBefore = 0, rollingBefore = 0;
+    for (const ContactRecord& c : records_)
+    {
+        state.friction += c.frictionWork;
+        state.rolling += c.rollingSlipWork;
+        tangentialBefore += c.tangentialEnergyBefore;
+        rollingBefore += c.rollingEnergyBefore;
+    }
+    state.friction += state.tangentialSpringEnergy - tangentialBefore;
+    state.rolling += state.rollingSpringEnergy - rollingBefore;
+}
+
+void EnergyLedger::afterStep(const World& world, Real dt)
+{
+    // The powers of this step's forces at v(t+dt), trapezoids with the last step's.
+    const LedgerPowers power = ledgerPowers(world, records_);
+    const Real half = 0.5 * dt;
+    state.wallWork += half * (state.wallPower + power.wall);
+    state.normalDamping += half * (state.normalDampingPower + power.normalDamping);
+    state.tangentialDamping += half * (state.tangentialDampingPower + power.tangentialDamping);
+    state.rolling += half * (state.rollingPower + power.rolling);
+    state.wallPower = power.wall;
+    state.normalDampingPower = power.normalDamping;
+    state.tangentialDampingPower = power.tangentialDamping;
+    state.rollingPower = power.rolling;
+    Real elastic = 0;
+    state.tangentialSpringEnergy = state.rollingSpringEnergy = 0;
+    for (const ContactRecord& c : records_)
+    {
+        elastic += c.elasticEnergy();
+        state.tangentialSpringEnergy += c.tangentialEnergy;
+        state.rollingSpringEnergy += c.rollingEnergy;
+    }
+    state.elasticEnergy = elastic;
+}
+
+Real EnergyLedger::dissipated() const
+{
+    return state.normalDamping + state.tangentialDamping + state.friction + state.rolling;
+}
+
+Real EnergyLedger::residual(const World& world) const
+{
+    return kineticEnergy(world) + state.elasticEnergy - state.gravityWork - state.wallWork + dissipated() -
+           state.initialEnergy;
+}
+
+} // namespace veridem::dem

@@ -1,0 +1,113 @@
+#include "io/contact_output.h"
+
+#include "io/output_file.h"
+
+#include <cstdio>
+
+namespace veridem::io
+{
+
+namespace
+{
+std::string vtpName(std::size_t frame)
+{
+    char name[64];
+    std::snprintf(name, sizeof name, "contacts_%06zu.vtp", frame);
+    return name;
+}
+} // namespace
+
+ContactRecorder::ContactRecorder(const std::filesystem::path& directory, VtkFormat format,
+                                 const std::vector<double>& frameTimes)
+    : directory_(directory), format_(format), frameTimes_(frameTimes)
+{
+    std::error_code error;
+    for (std::size_t k = 0; k < frameTimes_.size(); ++k)
+        listed_.push_back(std::filesystem::is_regular_file(directory_ / vtpName(k), error));
+}
+
+void ContactRecorder::record(const dem::World& world, const std::vector<dem::ContactRecord>& contacts)
+{
+    const std::size_t n = contacts.size();
+    AtomicFile file(directory_ / vtpName(frameTimes_.size()));
+    std::ostream& out = file.stream();
+    VtkXmlArrays arrays(format_);
+    out << arrays.vtkFileOpening("PolyData") << "<PolyData>\n<Piece NumberOfPoints=\"" << 2 * n
+        << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << n << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+    std::vector<double> points(6 * n);
+    for (std::size_t c = 0; c < n; ++c)
+    {
+        const dem::ContactRecord& r = contacts[c];
+        const Vec3 a = world.particles.position[r.i];
+        const Vec3 b = r.wall ? r.point : world.particles.position[r.partner];
+        const double row[6] = {a.x, a.y, a.z, b.x, b.y, b.z};
+        for (std::size_t k = 0; k < 6; ++k)
+            points[6 * c + k] = row[k];
+    }
+    out << "<Points>\n";
+    arrays.float64(out, "", 3, points.data(), 6 * n);
+    out << "</Points>\n<Lines>\n";
+    std::vector<std::int64_t> connectivity(2 * n), offsets(n), ids(2 * n);
+    std::vector<std::uint8_t> wall(n);
+    for (std::size_t c = 0; c < n; ++c)
+    {
+        connectivity[2 * c] = static_cast<std::int64_t>(2 * c);
+        connectivity[2 * c + 1] = static_cast<std::int64_t>(2 * c + 1);
+        offsets[c] = static_cast<std::int64_t>(2 * c + 2);
+        ids[2 * c] = contacts[c].i;
+        ids[2 * c + 1] = contacts[c].partner;
+        wall[c] = contacts[c].wall ? 1 : 0;
+    }
+    arrays.int64(out, "connectivity", 1, connectivity.data(), 2 * n);
+    arrays.int64(out, "offsets", 1, offsets.data(), n);
+    out << "</Lines>\n<CellData Scalars=\"force_magnitude\" Vectors=\"normal_force\">\n";
+    arrays.int64(out, "ids", 2, ids.data(), 2 * n);
+    arrays.uint8(out, "wall", 1, wall.data(), n);
+    std::vector<double> flat(3 * n), magnitude(n);
+    const auto vectors = [&](Vec3 dem::ContactRecord::*field)
+    {
+        for (std::size_t c = 0; c < n; ++c)
+        {
+            const Vec3 v = contacts[c].*field;
+            flat[3 * c] = v.x;
+            flat[3 * c + 1] = v.y;
+            flat[3 * c + 2] = v.z;
+        }
+        return flat.data();
+    };
+    arrays.float64(out, "contact_point", 3, vectors(&dem::ContactRecord::point), 3 * n);
+    arrays.float64(out, "normal", 3, vectors(&dem::ContactRecord::normal), 3 * n);
+    arrays.float64(out, "normal_force", 3, vectors(&dem::ContactRecord::normalForce), 3 * n);
+    arrays.float64(out, "tangential_force", 3, vectors(&dem::ContactRecord::tangentialForce), 3 * n);
+    for (std::size_t c = 0; c < n; ++c)
+        magnitude[c] = length(contacts[c].normalForce + contacts[c].tangentialForce);
+    arrays.float64(out, "force_magnitude", 1, magnitude.data(), n);
+    out << "</CellData>\n</Piece>\n</PolyData>\n";
+    arrays.finish(out);
+    file.commit();
+    frameTimes_.push_back(world.time);
+    listed_.push_back(true);
+    writePvd();
+}
+
+void ContactRecorder::writePvd() const
+{
+    AtomicFile file(directory_ / "contacts.pvd");
+    std::string text =
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+    for (std::size_t k = 0; k < frameTimes_.size(); ++k)
+    {
+        if (!listed_[k])
+            continue;
+        text += "<DataSet timestep=\"";
+        appendNumber(text, frameTimes_[k]);
+        text += "\" file=\"";
+        text += vtpName(k);
+        text += "\"/>\n";
+    }
+    text += "</Collection>\n</VTKFile>\n";
+    file.stream() << text;
+    file.commit();
+}
+
+} // namespace veridem::io
