@@ -201,7 +201,7 @@ template <class T> struct ContactOutputOf
     lanes::Vec3Of<T> force;           // total force on i [N] (normal + tangential)
     lanes::Vec3Of<T> tangentialForce; // its tangential part [N] (its torque lever is applied by the caller)
     lanes::Vec3Of<T> rollingTorque;   // rolling/twisting resistance torque on i [N m]
-    T normalForce{};                  // signed Fn [N] (> 0 repulsive; may be slightly < 0: no clipping)
+    T normalForce{};                  // signed Fn [N] (> 0 repulsive; linear may pull slightly)
     lanes::MaskOf<T> sliding{};
 };
 using ContactOutput = ContactOutputOf<Real>;
@@ -357,7 +357,13 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
     const Real halfStep = 0.5 * dt;
     const T normalSpeedEnd =
         (in.effectiveMass * normalSpeed + halfStep * elastic) / (in.effectiveMass + halfStep * dampingWeight);
-    const T normalForce = elastic - dampingWeight * normalSpeedEnd;
+    T normalForce = elastic - dampingWeight * normalSpeedEnd;
+    // A Hertz contact never pulls: Fn = max(0, ...), with beta computed for the clipped law
+    // (models/normal.h). The clip agrees with the end-of-step speed above: the estimated force,
+    // m* (elastic - eta u_half) / (m* + dt/2 eta), has the sign of the force at the half-step
+    // speed, so where it is clipped no force acts over the final half kick and u = u_half.
+    if constexpr (Model::normal == NormalModel::Hertz)
+        normalForce = normalForce < zero ? zero : normalForce; // (NaN passes: the health check sees it)
     if constexpr (kReport)
     {
         terms->elasticNormalForce = elastic;

@@ -58,6 +58,13 @@ void validateMaterial(const Material& m)
         bad(m, "surface energy is read only by the \"jkr\" and \"dmt\" models");
 }
 
+Real hertzBetaFromRestitution(NormalModel model, Real e)
+{
+    // Hertz is clipped at Fn >= 0 (models/normal.h); JKR and DMT keep their attractive end and
+    // beta = -ln e / sqrt(ln^2 e + pi^2), the linear model's expression.
+    return model == NormalModel::Hertz ? hertzDampingFactorWithoutTension(e) : dampingRatioFromRestitution(e);
+}
+
 PairParams mixMaterials(const Material& a, const Material& b)
 {
     PairParams p;
@@ -78,7 +85,7 @@ PairParams mixMaterials(const Material& a, const Material& b)
     }
     const Real e = 0.5 * (a.restitution + b.restitution);
     p.dampingRatio = dampingRatioFromRestitution(e);
-    p.hertzBeta = p.dampingRatio; // beta = -ln e / sqrt(ln^2 e + pi^2): the same expression
+    p.hertzBeta = hertzBetaFromRestitution(p.normalModel, e);
     if (a.normalDampingRate >= 0 || b.normalDampingRate >= 0)
         p.dampingRate = 0.5 * (std::fmax(a.normalDampingRate, 0) + std::fmax(b.normalDampingRate, 0));
     const Real ratioA = a.tangentialDampingRatio, ratioB = b.tangentialDampingRatio;

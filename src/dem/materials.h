@@ -91,7 +91,7 @@ struct PairParams
     Real effectiveShearModulus = 0;  // G* [Pa] (Hertz-Mindlin kt = 8 G* sqrt(R* delta))
     Real workOfAdhesion = 0;         // w [J/m^2] (JKR, DMT): 2 sqrt(gamma_a gamma_b)
     Real dampingRatio = 0;           // zeta from e (linear) [-]
-    Real hertzBeta = 0;              // beta from e (Hertz) [-]
+    Real hertzBeta = 0;              // beta from e (Hertz, JKR, DMT: hertzBetaFromRestitution) [-]
     Real dampingRate = -1;           // gamma_n [1/s] if >= 0
     Real tangentialDampingRatio = 0; // etaT / etaN [-]
     Real mu = 0;                     // [-]
@@ -102,6 +102,9 @@ struct PairParams
     Real rollingViscous = 0;       // type B c_r [s/m]
     bool rollingTwist = true;      // rolling torque also opposes twist about the normal
 };
+
+/// The Hertz-family damping factor beta [-] that gives restitution e (0 < e <= 1) with `model`.
+Real hertzBetaFromRestitution(NormalModel model, Real e);
 
 /// Mixes two materials into pair parameters (see the rules above).
 PairParams mixMaterials(const Material& a, const Material& b);

@@ -328,7 +328,8 @@ void applyPairOverride(TableReader& t, dem::World& world)
     {
         if (!(*e > 0 && *e <= 1))
             t.fail("restitution", "must be in (0, 1]");
-        params.dampingRatio = params.hertzBeta = dem::dampingRatioFromRestitution(*e);
+        params.dampingRatio = dem::dampingRatioFromRestitution(*e);
+        params.hertzBeta = dem::hertzBetaFromRestitution(params.normalModel, *e);
     }
     if (auto muR = t.optionalNumber("rolling_friction"))
     {

@@ -3,10 +3,10 @@
 // and cast iron (100 GPa, 0.25, 7000) (BENCHMARKS 4). Expected: e_out = e_in (the identity line
 // Chung & Ooi draw), and at e = 1 the Hertz closed forms of test 1 (Al2O3: delta_max = 8.09 um,
 // F_max = 615 N, tc = 6.10 us; cast iron 17.2 um, 507 N, 12.97 us).
-// The damping eta = 2 sqrt(5/6) beta sqrt(S_n m*) with beta = -ln e / sqrt(ln^2 e + pi^2)
-// (docs/models.md) gives e exactly when the attractive end of the contact is not clipped: the
-// dimensionless equation x'' = -x^{3/2} - sqrt(5) beta x^{1/4} x' has a restitution that depends on
-// beta alone and equals e to 1e-7 over 0.1..1 (RK4, checked when the case was written).
+// The damping eta = 2 sqrt(5/6) beta sqrt(S_n m*) with the normal force clipped at zero: beta is
+// computed for the clipped law from the dimensionless equation x'' = -max(0, x^{3/2} +
+// sqrt(5) beta x^{1/4} x'), whose restitution depends on beta alone (RK4 and bisection,
+// models/normal.h, docs/models.md), so e_out = e_in up to the time-step error.
 // Tolerance on e_out: 1e-3 absolute at 1000 steps per contact, the bound BENCHMARKS 2.1 gives for
 // velocity Verlet at >= 50 steps per contact scaled down by the second-order damping (see
 // chung_ooi_convergence for the measured order).

@@ -8,9 +8,10 @@
 // use the half-step angular velocity. Expected orders, from where each error comes from:
 //   collision, linear restitution: 2 (docs/models.md: second-order damping);
 //   collision, Hertz restitution: 5/4. The Hertz dashpot coefficient grows as delta^(1/4), with
-//     an infinite slope at delta = 0: in the last step of a contact the damping force is of order
-//     (v dt)^(1/4) and is credited for a fraction of the step that depends on where separation
-//     falls, an impulse error ~dt^(5/4). The error scatters with that phase, so the study takes the
+//     an infinite slope at delta = 0: in the first step of a contact the damping force is of order
+//     (v dt)^(1/4) and is credited for a fraction of the step that depends on where first touch
+//     falls, an impulse error ~dt^(5/4) (the contact ends where the clipped force reaches zero,
+//     continuously). The error scatters with that phase, so the study takes the
 //     largest error over eight start phases and fits the order over five doublings;
 //   friction, no-slip tangential spring (linear, and Hertz-Mindlin against its integrated
 //     no-slip reference): 1. The spring adds the slip of the whole step in which the contact
@@ -90,7 +91,7 @@ Real viscousRollSpeed(Real n, const CaseContext& context)
 }
 
 // Largest error over eight start phases (first touch at 0, 1/8, ..., 7/8 of a step): for the Hertz
-// damping the error depends on where the contact ends between steps (see above), and its envelope
+// damping the error depends on where the contact begins between steps (see above), and its envelope
 // is what converges.
 Real envelope(const std::function<Real(Real)>& errorAtStart)
 {
