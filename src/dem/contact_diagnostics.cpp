@@ -1,5 +1,6 @@
 #include "dem/contact_diagnostics.h"
 
+#include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 
 #include <cmath>
@@ -70,36 +71,30 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
     std::vector<ContactRecord> records;
     const ParticleStore& p = world.particles;
     const NeighborList& list = world.neighbors;
-    // Pairs: the input of the force stage's scalar path (forces.cpp, pairContactScalar).
+    // Pairs: the contact frame of the force stage (pairContactFrame, contact_frame.h).
     for (std::size_t k = 0; k < list.size(); ++k)
     {
         const std::uint32_t i = list.first[k], j = list.second[k];
-        const Vec3 separation = p.position[i] - p.position[j];
         const Real ri = p.radius[i], rj = p.radius[j];
         const Real touching = ri + rj;
-        const Real distance2 = lengthSquared(separation);
-        if (distance2 >= touching * touching)
+        if (lengthSquared(p.position[i] - p.position[j]) >= touching * touching)
             continue;
         const PairParams& params = world.pairs(p.material[i], p.material[j]);
-        const Real distance = std::sqrt(distance2);
-        const Real reciprocal = 1.0 / (distance * touching);
-        const Real inverseDistance = touching * reciprocal;
+        const ContactFrameOf<Real> f =
+            pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
+                                   p.angularVelocity[i], p.angularVelocity[j]);
         ContactInput in;
-        in.normal = distance > 0 ? Vec3{separation.x * inverseDistance, separation.y * inverseDistance,
-                                        separation.z * inverseDistance}
-                                 : Vec3{0, 0, 1};
-        in.overlap = touching - distance;
-        const Real share = distance > 0 ? distance * distance * reciprocal : 0.0;
-        const Real leverI = ri * share, leverJ = rj * share;
-        in.relativeVelocity = p.velocity[i] - p.velocity[j] -
-                              cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
+        in.normal = f.normal;
+        in.overlap = f.overlap;
+        const Real leverI = f.leverI, leverJ = f.leverJ;
+        in.relativeVelocity = f.relativeVelocity;
         in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
         in.angularVelocity = p.angularVelocity[i];
         in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
         in.effectiveRadius = ri * rj / touching;
         in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
-                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+        in.rollingInertia =
+            pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
         ContactHistory history = list.slotHistory(k); // a copy: the world keeps its own
         history.formed = 1;
         LawTerms terms;
@@ -112,7 +107,7 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
         r.point = p.position[i] - leverI * in.normal;
         records.push_back(r);
     }
-    // Walls: the input of forces.cpp's wallContactInput.
+    // Walls: the contact frame of the force stage (wallContactFrame, contact_frame.h).
     const WallContactList& walls = world.wallContacts;
     if (walls.start.size() != p.size() + 1)
         return records;
@@ -125,19 +120,20 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
         if (!gap.touching)
             continue;
         const PairParams& params = world.pairs(p.material[i], wall.material);
+        const ContactFrameOf<Real> f =
+            wallContactFrame(gap.normal, gap.overlap, p.position[i], p.velocity[i], p.angularVelocity[i], r,
+                             surfaceMotion(wall, -0.5 * dt), 0.5 * dt);
+        const Vec3 arm = wallArm(r, gap.normal);
         ContactInput in;
         in.normal = gap.normal;
         in.overlap = gap.overlap;
-        const Vec3 arm = -r * gap.normal;
-        const Vec3 midStepContactPoint = p.position[i] - (0.5 * dt) * p.velocity[i] + arm;
-        in.relativeVelocity = p.velocity[i] + cross(p.angularVelocity[i], arm) -
-                              wallSurfaceVelocity(wall, midStepContactPoint, -0.5 * dt);
+        in.relativeVelocity = f.relativeVelocity;
         in.angularVelocity = p.angularVelocity[i];
         in.relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
         in.effectiveMass = p.mass[i];
         in.effectiveRadius = gap.effectiveRadius;
         in.spinInertia = 1.0 / p.invInertia[i];
-        in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
+        in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], r);
         ContactHistory history = walls.history(k);
         LawTerms terms;
         const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);

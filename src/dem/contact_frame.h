@@ -79,4 +79,19 @@ VERIDEM_HOT_INLINE ContactFrameOf<Real> wallContactFrame(const Vec3& normal, Rea
     return {normal, overlap, r, 0, v + cross(w, arm) - velocityAt(motion, midStepContactPoint)};
 }
 
+/// The rolling inertia of a pair [kg m^2]: the series combination of each sphere's moment of
+/// inertia about its contact point, I + m r^2 (invInertia [1/(kg m^2)], mass [kg], radius [m]).
+VERIDEM_HOT_INLINE Real pairRollingInertia(Real invInertiaI, Real massI, Real ri, Real invInertiaJ,
+                                           Real massJ, Real rj)
+{
+    return 1.0 / (1.0 / (1.0 / invInertiaI + massI * ri * ri) + 1.0 / (1.0 / invInertiaJ + massJ * rj * rj));
+}
+
+/// The rolling inertia of a sphere on a wall [kg m^2]: about its contact point, I + m r^2
+/// (spinInertia I [kg m^2], mass [kg], radius [m]).
+VERIDEM_HOT_INLINE Real wallRollingInertia(Real spinInertia, Real mass, Real r)
+{
+    return spinInertia + mass * r * r;
+}
+
 } // namespace veridem::dem

@@ -287,7 +287,7 @@ template <class T> struct LawTermsOf
     ContactCoefficientsOf<T> coefficients; // kn, kt [N/m], etaN, etaT [N s/m] at this overlap
     lanes::Vec3Of<T> tangentialStart{};    // stored spring in the tangent plane before the step [m]
     lanes::Vec3Of<T> tangentialTrial{};    // the spring with this step's increment, before the cap [m]
-    lanes::Vec3Of<T> tangentialDamping{};  // dashpot part of the tangential force, -etaT vt [N]
+    lanes::Vec3Of<T> tangentialDamping{};  // Ft + kt xi: -etaT vt, or all of Ft if xi is zeroed [N]
     T rollingStiffness{};                  // EPSD kr [N m/rad] (0 for the other rolling models)
     lanes::Vec3Of<T> rollingStart{};       // EPSD stored spring torque before the step [N m]
     lanes::Vec3Of<T> rollingTrial{};       // EPSD spring with this step's increment, before the cap [N m]
@@ -385,12 +385,13 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
         terms->tangentialStart =
             kProjected ? history.tangentialSpring : projectSpring<T>(history.tangentialSpring, in.normal);
         terms->tangentialTrial = terms->tangentialStart + tangentialVelocity * dt;
-        terms->tangentialDamping = -c.etaT * tangentialVelocity;
         terms->rollingStart = history.rollingSpring;
     }
     TangentialResultOf<T> t = coulombSpring<T, kProjected>(c.kt, c.etaT, p.mu, load, history.tangentialSpring,
                                                            in.normal, tangentialVelocity, dt);
     history.tangentialSpring = t.spring;
+    if constexpr (kReport) // the force's part beyond the stored spring's -kt xi: -etaT vt, or all of
+        terms->tangentialDamping = t.force + c.kt * t.spring; // it when the spring holds nothing
 
     // 3. Rolling resistance, capped by muR * Fn. It opposes the whole relative angular velocity
     // unless the pair opts out of twist resistance (PairParams::rollingTwist, see materials.h).

@@ -31,8 +31,8 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
         in.angularVelocity = p.angularVelocity[i];
         in.effectiveRadius = ri * rj / (ri + rj);
         in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
-                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+        in.rollingInertia =
+            pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
         law.setRollingInputs(m, in, list.keepRollingHistory ? list.activeRolling[b.candidate[m]] : Vec3{});
     }
 }
@@ -278,8 +278,8 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     if (extra.spinInertia)
         in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
     if (extra.rollingInertia)
-        in.rollingInertia = 1.0 / (1.0 / (1.0 / p.invInertia[i] + p.mass[i] * ri * ri) +
-                                   1.0 / (1.0 / p.invInertia[j] + p.mass[j] * rj * rj));
+        in.rollingInertia =
+            pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
 
     ContactHistory history = list.candidateHistory(k);
     history.formed = sink.mayBeActive[k];

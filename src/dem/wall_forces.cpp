@@ -39,9 +39,9 @@ using WallLaw = void (*)(LawBatch&, std::size_t, Real, const LawParams*);
 VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const Wall& wall, const WallGap& gap,
                                                  Real dt, Vec3& arm)
 {
-    const ContactFrameOf<Real> frame = wallContactFrame(gap.normal, gap.overlap, s.position, s.velocity,
-                                                        s.angularVelocity, s.radius, surfaceMotion(wall, -0.5 * dt),
-                                                        0.5 * dt);
+    const ContactFrameOf<Real> frame =
+        wallContactFrame(gap.normal, gap.overlap, s.position, s.velocity, s.angularVelocity, s.radius,
+                         surfaceMotion(wall, -0.5 * dt), 0.5 * dt);
     arm = wallArm(s.radius, gap.normal);
     ContactInput in;
     in.normal = gap.normal;
@@ -122,7 +122,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
             addContactLaw(b, m, world.pairs(p.material[i], wall.material));
         if (!uniform || uniform->models != 1u) // (as wallContactScalar)
         {
-            in.rollingInertia = in.spinInertia + p.mass[i] * p.radius[i] * p.radius[i];
+            in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], p.radius[i]);
             b.setRollingInputs(m, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
         }
         if (++m == kBatch)
@@ -178,7 +178,7 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
         in.angularVelocity = p.angularVelocity[i];
         in.effectiveRadius = r;
         in.spinInertia = 1.0 / p.invInertia[i];
-        in.rollingInertia = in.spinInertia + p.mass[i] * r * r;
+        in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], r);
         b.setRollingInputs(q, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
     }
 }
@@ -305,7 +305,7 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
     Vec3 arm;
     ContactInput in = wallContactInput(s, wall, gap, dt, arm);
     if (params.rollingModel == RollingModel::Epsd)
-        in.rollingInertia = in.spinInertia + s.mass * s.radius * s.radius;
+        in.rollingInertia = wallRollingInertia(in.spinInertia, s.mass, s.radius);
 
     ContactHistory history = list.history(k);
     const ContactOutput out = evaluateContact(params, in, history, dt);
