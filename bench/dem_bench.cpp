@@ -19,6 +19,7 @@
 // long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
 #include "core_probe.h"
 #include "dem/forces.h"
+#include "dem/models/normal.h"
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
@@ -203,11 +204,12 @@ World bedWorld(const Options& o)
     if (o.model == "hertz")
     {
         // Hertz-Mindlin, the same law as bench/lammps/bed_hertz.in (LAMMPS `granular hertz/material`,
-        // tangential `mindlin NULL`, damping `tsuji`, whose eta_n = alpha(e) sqrt(m* (4/3) E* a) is
-        // veridem's 2 sqrt(5/6) beta sqrt(m* 2 E* a) when beta = alpha / sqrt(5); the restitution
-        // here is the one whose beta that is, for Tsuji's alpha(0.5) = 0.34074). E* = E / (2 (1 -
-        // nu^2)) = 2.75e7 Pa between two spheres: the contact stiffness 2 E* sqrt(R* delta) is
-        // ~1000 N/m, the linear bed's kn, at its ~0.5 um overlaps. eta_t = (2/7) eta_n.
+        // tangential `mindlin NULL`, damping `tsuji` with `limit_damping`, whose eta_n = alpha(e)
+        // sqrt(m* (4/3) E* a) is veridem's 2 sqrt(5/6) beta sqrt(m* 2 E* a) when beta = alpha /
+        // sqrt(5); both clip Fn at 0, and the restitution given here is the one whose beta for the
+        // clipped law is that, for Tsuji's alpha(0.5) = 0.34074). E* = E / (2 (1 - nu^2)) = 2.75e7 Pa
+        // between two spheres: the contact stiffness 2 E* sqrt(R* delta) is ~1000 N/m, the linear
+        // bed's kn, at its ~0.5 um overlaps. eta_t = (2/7) eta_n.
         const double e = 0.5;
         const double alpha = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * std::pow(e, 3) +
                              27.467 * std::pow(e, 4) - 18.022 * std::pow(e, 5) + 4.8218 * std::pow(e, 6);
@@ -215,7 +217,7 @@ World bedWorld(const Options& o)
         m.normalModel = NormalModel::Hertz;
         m.youngsModulus = 5e7;
         m.poissonRatio = 0.3;
-        m.restitution = std::exp(-3.14159265358979 * beta / std::sqrt(1 - beta * beta)); // 0.61608
+        m.restitution = hertzRestitutionOfClippedDamping(beta);
         m.normalDampingRate = -1;
         m.tangentialDampingRatio = 2.0 / 7.0;
     }
