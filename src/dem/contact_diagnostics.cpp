@@ -2,6 +2,7 @@
 
 #include "dem/contact_frame.h"
 #include "dem/contact_law.h"
+#include "dem/pair_kernel.h"
 
 #include <cmath>
 #include <limits>
@@ -83,18 +84,8 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
         const ContactFrameOf<Real> f =
             pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
                                    p.angularVelocity[i], p.angularVelocity[j]);
-        ContactInput in;
-        in.normal = f.normal;
-        in.overlap = f.overlap;
+        const ContactInput in = pairContactInput(p, i, j, f, p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]));
         const Real leverI = f.leverI, leverJ = f.leverJ;
-        in.relativeVelocity = f.relativeVelocity;
-        in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
-        in.angularVelocity = p.angularVelocity[i];
-        in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-        in.effectiveRadius = ri * rj / touching;
-        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-        in.rollingInertia =
-            pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
         ContactHistory history = list.slotHistory(k); // a copy: the world keeps its own
         history.formed = 1;
         LawTerms terms;

@@ -104,20 +104,6 @@ template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
     forNormal.template operator()<N::Dmt>(3 * kRollingModelCount);
 }
 
-/// What the law reads beyond the linear normal and tangential model.
-struct ExtraInputs
-{
-    bool effectiveRadius, spinInertia, rollingInertia;
-};
-inline ExtraInputs extraInputsFor(const PairParams& p)
-{
-    const bool rolling = p.rollingModel != RollingModel::None;
-    return {isHertzian(p.normalModel) || rolling,
-            p.rollingModel == RollingModel::ConstantTorque ||
-                p.rollingModel == RollingModel::ConstantTorqueAbsolute,
-            p.rollingModel == RollingModel::Epsd};
-}
-
 /// The pair parameters as the law reads them (one value per lane).
 template <class T> struct LawParamsOf
 {

@@ -252,6 +252,23 @@ PairKernel pairKernelFor(exec::Isa isa)
     return isa == exec::Isa::Avx2 ? pairContactsAvx2 : pairContactsPortable;
 }
 
+ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint32_t j,
+                              const ContactFrameOf<Real>& frame, Real effectiveMass)
+{
+    const Real ri = p.radius[i], rj = p.radius[j];
+    ContactInput in;
+    in.normal = frame.normal;
+    in.overlap = frame.overlap;
+    in.relativeVelocity = frame.relativeVelocity;
+    in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+    in.angularVelocity = p.angularVelocity[i];
+    in.effectiveMass = effectiveMass;
+    in.effectiveRadius = ri * rj / (ri + rj);
+    in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
+    in.rollingInertia = pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
+    return in;
+}
+
 /// Touching candidate k through the general contact law (any model), added into the sink.
 void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
                        WorstOverlap& worst)
@@ -259,27 +276,12 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     const ParticleStore& p = world.particles;
     const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
     const Real ri = p.radius[i], rj = p.radius[j];
-    const Real touching = ri + rj;
     const PairParams& params = world.pairs(p.material[i], p.material[j]);
-    const ExtraInputs extra = extraInputsFor(params);
     const ContactFrameOf<Real> f =
         pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
                                p.angularVelocity[i], p.angularVelocity[j]);
-    ContactInput in;
-    in.normal = f.normal;
-    in.overlap = f.overlap;
+    const ContactInput in = pairContactInput(p, i, j, f, list.activeMass[k]);
     const Real leverI = f.leverI, leverJ = f.leverJ;
-    in.relativeVelocity = f.relativeVelocity;
-    in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
-    in.angularVelocity = p.angularVelocity[i];
-    in.effectiveMass = list.activeMass[k];
-    if (extra.effectiveRadius)
-        in.effectiveRadius = ri * rj / touching;
-    if (extra.spinInertia)
-        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-    if (extra.rollingInertia)
-        in.rollingInertia =
-            pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
 
     ContactHistory history = list.candidateHistory(k);
     history.formed = sink.mayBeActive[k];

@@ -6,6 +6,7 @@
 // through the general law (pairContactScalar): the same templates, so the same bits.
 #pragma once
 
+#include "dem/contact_frame.h"
 #include "dem/exec/pair_selection.h"
 #include "dem/world.h"
 #include "exec/isa.h"
@@ -89,6 +90,11 @@ using PairKernel = void (*)(const World&, const PairSink&, Real dt, std::size_t 
 
 /// The pair kernel compiled for `isa` (four lanes with AVX2, two portable).
 PairKernel pairKernelFor(exec::Isa isa);
+
+/// The contact input of spheres i and j from their frame (pairContactFrame): every field the law
+/// can read, with the effective mass m* [kg] given (the neighbour list keeps it per candidate).
+ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint32_t j,
+                              const ContactFrameOf<Real>& frame, Real effectiveMass);
 
 /// Touching candidate k through the general contact law (any model), added into the sink.
 void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,

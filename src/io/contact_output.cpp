@@ -1,6 +1,7 @@
 #include "io/contact_output.h"
 
 #include "io/output_file.h"
+#include "io/vtk_xml.h"
 
 #include <cstdio>
 
@@ -92,22 +93,7 @@ void ContactRecorder::record(const dem::World& world, const std::vector<dem::Con
 
 void ContactRecorder::writePvd() const
 {
-    AtomicFile file(directory_ / "contacts.pvd");
-    std::string text =
-        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-    for (std::size_t k = 0; k < frameTimes_.size(); ++k)
-    {
-        if (!listed_[k])
-            continue;
-        text += "<DataSet timestep=\"";
-        appendNumber(text, frameTimes_[k]);
-        text += "\" file=\"";
-        text += vtpName(k);
-        text += "\"/>\n";
-    }
-    text += "</Collection>\n</VTKFile>\n";
-    file.stream() << text;
-    file.commit();
+    writePvdCollection(directory_ / "contacts.pvd", frameTimes_, listed_, vtpName);
 }
 
 } // namespace veridem::io

@@ -1,6 +1,7 @@
 #include "io/particle_output.h"
 
 #include "core/error.h"
+#include "io/vtk_xml.h"
 
 #include <cstdio>
 
@@ -116,22 +117,7 @@ void ParticleRecorder::writeVtp(const dem::World& world, const std::filesystem::
 
 void ParticleRecorder::writePvd() const
 {
-    AtomicFile file(directory_ / "particles.pvd");
-    std::string text =
-        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-    for (std::size_t k = 0; k < frameTimes_.size(); ++k)
-    {
-        if (!listed_[k])
-            continue;
-        text += "<DataSet timestep=\"";
-        appendNumber(text, frameTimes_[k]);
-        text += "\" file=\"";
-        text += vtpName(k);
-        text += "\"/>\n";
-    }
-    text += "</Collection>\n</VTKFile>\n";
-    file.stream() << text;
-    file.commit();
+    writePvdCollection(directory_ / "particles.pvd", frameTimes_, listed_, vtpName);
 }
 
 } // namespace veridem::io

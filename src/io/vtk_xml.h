@@ -1,14 +1,18 @@
-// DataArray elements of VTK XML files (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html),
-// shared by the 3D particle output and the 2D mesh output. ASCII writes the values inline with
-// round-trip precision; binary appends them raw, zlib-compressed in blocks, in the layout of VTK's
-// vtkZLibDataCompressor with UInt64 headers ([blocks, block size, last block size, compressed
-// sizes...] then the blocks), which ParaView and VTK's own readers read.
+// ParaView collections (.pvd) and the DataArray elements of VTK XML files
+// (https://docs.vtk.org/en/latest/design_documents/VTKFileFormats.html), shared by the 3D particle output and
+// the 2D mesh output. ASCII writes the values inline with round-trip precision; binary appends them raw,
+// zlib-compressed in blocks, in the layout of VTK's vtkZLibDataCompressor with UInt64 headers ([blocks, block
+// size, last block size, compressed sizes...] then the blocks), which ParaView and VTK's own readers read.
 #pragma once
 
+#include "io/output_file.h"
+
 #include <cstdint>
+#include <filesystem>
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace veridem::io
 {
@@ -18,6 +22,30 @@ enum class VtkFormat
     Ascii,
     Binary,
 };
+
+/// Writes the ParaView collection `path` (.pvd) atomically: one DataSet for each frame k whose
+/// listed[k] is true, at time times[k] [s], file fileOf(k) (relative to the .pvd).
+template <class FileOf>
+void writePvdCollection(const std::filesystem::path& path, const std::vector<double>& times,
+                        const std::vector<bool>& listed, const FileOf& fileOf)
+{
+    AtomicFile file(path);
+    std::string text =
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+    for (std::size_t k = 0; k < times.size(); ++k)
+    {
+        if (!listed[k])
+            continue;
+        text += "<DataSet timestep=\"";
+        appendNumber(text, times[k]);
+        text += "\" file=\"";
+        text += fileOf(k);
+        text += "\"/>\n";
+    }
+    text += "</Collection>\n</VTKFile>\n";
+    file.stream() << text;
+    file.commit();
+}
 
 /// "ascii" or "binary".
 const char* vtkFormatName(VtkFormat format);
