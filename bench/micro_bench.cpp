@@ -111,7 +111,7 @@ void neighbourRebuild(benchmark::State& state)
 {
     World world = latticeWorld(static_cast<int>(state.range(0)));
     for (auto _ : state)
-        world.neighbors.rebuild(world.particles);
+        world.neighbors.rebuild(world.particles, world.pairHistory);
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles.size()));
 }
 BENCHMARK(neighbourRebuild)->Arg(16)->Arg(28);

@@ -86,7 +86,9 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
                                    p.angularVelocity[i], p.angularVelocity[j]);
         const ContactInput in = pairContactInput(p, i, j, f, p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]));
         const Real leverI = f.leverI, leverJ = f.leverJ;
-        ContactHistory history = list.slotHistory(k); // a copy: the world keeps its own
+        const std::size_t a = list.candidateOfSlot(k);
+        ContactHistory history = // a copy: the world keeps its own
+            a == NeighborList::kNotCandidate ? ContactHistory{} : world.pairHistory.at(a);
         history.formed = 1;
         LawTerms terms;
         const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
@@ -125,7 +127,7 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
         in.effectiveRadius = gap.effectiveRadius;
         in.spinInertia = 1.0 / p.invInertia[i];
         in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], r);
-        ContactHistory history = walls.history(k);
+        ContactHistory history = world.wallHistory.at(k);
         LawTerms terms;
         const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
         ContactRecord rec = recordOf(params, in, out, terms, history);

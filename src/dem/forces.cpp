@@ -74,7 +74,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     const int chunks = static_cast<int>(std::min(
         {static_cast<std::size_t>(loopThreads(std::max(pairCount, n))), blocks, std::size_t{kMaxChunks}}));
 
-    list.refreshActiveSlots(p); // the touching candidates, if the sub-list is stale
+    list.refreshActiveSlots(p, world.pairHistory); // the touching candidates, if the sub-list is stale
     const std::uint32_t* const active = list.activeSlots.data();
     const std::size_t activeCount = list.activeSlots.size();
     const auto activeFrom = [&](std::size_t particle) // first candidate slot of this particle on
@@ -124,11 +124,11 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
                 const Real touching = radius[i] + radius[j] + list.reach;
                 if (lengthSquared(position[i] - position[j]) < touching * touching)
                 {
-                    pairContactScalar(world, list, sink, dt, a, worst);
+                    pairContactScalar(world, sink, dt, a, worst);
                     ++touchingCount;
                 }
                 else if (mayBeActive[a])
-                    list.openCandidate(a);
+                    list.openCandidate(a, world.pairHistory);
             }
             zeroSums(sink, sumsAreZero, zeroedEnd, endParticle);
             return ContactHealth{worst.ratio, worst.particle, worst.found, touchingCount};
@@ -148,7 +148,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
         {
             a = select(selection, a, zeroedEnd, batch, m, opened, o);
             for (std::size_t q = 0; q < o; ++q)
-                list.openCandidate(opened[q]);
+                list.openCandidate(opened[q], world.pairHistory);
             o = 0;
             if (m == kBatch || a == end)
             {

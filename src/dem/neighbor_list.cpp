@@ -1,5 +1,6 @@
 #include "dem/neighbor_list.h"
 
+#include "core/resize_exactly.h"
 #include "dem/parallel.h"
 
 #include <algorithm>
@@ -44,19 +45,9 @@ std::uint64_t pairKey(std::uint32_t i, std::uint32_t j)
     return (std::uint64_t(i) << 32) | j;
 }
 
-/// v.resize(count), with the capacity grown to exactly count and never shrunk: re-allocating
-/// arrays of changing sizes every few hundred steps fragmented the heap (peak RSS +80 B/particle
-/// over 1000 bed steps).
-template <class V> void resizeExactly(V& v, std::size_t count)
-{
-    if (v.capacity() < count)
-        v.reserve(count);
-    v.resize(count);
-}
-
 } // namespace
 
-void NeighborList::refreshActiveSlots(const ParticleStore& particles)
+void NeighborList::refreshActiveSlots(const ParticleStore& particles, ContactHistoryStore& history)
 {
     ++activeAge_;
     const bool mayShrink = activeAge_ > 128 && innerSkin > skin / 64; // long-lived: try a tighter one
@@ -74,9 +65,8 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
     ++activeRebuilds_;
     positionAtActiveBuild_.assign(particles.position.begin(), particles.position.end());
 
-    const std::size_t oldCount = activeFirst.size();
-    selectCandidates(particles);
-    carryHistory(oldCount);
+    selectCandidates(particles, history);
+    history.carry(source_.data(), activeSlots.size());
 
     // The rest of each candidate's record, from its slot.
     const std::size_t count = activeSlots.size();
@@ -96,7 +86,7 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles)
     slotsRebuilt_ = false;
 }
 
-void NeighborList::selectCandidates(const ParticleStore& particles)
+void NeighborList::selectCandidates(const ParticleStore& particles, const ContactHistoryStore& history)
 {
     // Which slots are within the inner skin, and how many: the new sub-list's arrays are then
     // sized exactly (push_back would over-allocate up to twice over, and they are never shrunk).
@@ -136,68 +126,20 @@ void NeighborList::selectCandidates(const ParticleStore& particles)
             activeSlots[a] = static_cast<std::uint32_t>(k);
             source_[a++] = from;
         }
-        else if (from != kNoSource && !slotsRebuilt_ && activeMayBeActive[from])
+        else if (from != kNoSource && !slotsRebuilt_ && history.formed[from])
             zeroDeferred(activeDeferred[from]); // left out, so not touching: the contact opened
     }
 }
 
-void NeighborList::carryHistory(std::size_t oldCount)
-{
-    const std::size_t count = activeSlots.size();
-    const std::uint32_t* const source = source_.data();
-    if (keepRollingHistory && activeRolling.size() < oldCount) // (no rolling history was kept: zeros)
-        activeRolling.assign(oldCount, Vec3{});
-    const std::size_t room = std::max(count, oldCount);
-    resizeExactly(activeSpring, room);
-    resizeExactly(activeMayBeActive, room);
-    if (keepRollingHistory)
-        resizeExactly(activeRolling, room);
-    else
-        activeRolling.clear();
-    Vec3* const spring = activeSpring.data();
-    Vec3* const rolling = activeRolling.data();
-    std::uint8_t* const flag = activeMayBeActive.data();
-    const auto move = [&](std::size_t to, std::size_t from)
-    {
-        spring[to] = spring[from];
-        flag[to] = flag[from];
-        if (keepRollingHistory)
-            rolling[to] = rolling[from];
-    };
-    // In place: both lists are in ascending order, so sources ascend with the new index. A
-    // candidate whose source lies after it is moved in ascending order, one whose source lies
-    // before it in descending order; neither move overwrites a source still to be read.
-    for (std::size_t a = 0; a < count; ++a)
-        if (source[a] != kNoSource && source[a] > a)
-            move(a, source[a]);
-    for (std::size_t a = count; a-- > 0;)
-        if (source[a] != kNoSource && source[a] < a)
-            move(a, source[a]);
-    for (std::size_t a = 0; a < count; ++a)
-        if (source[a] == kNoSource)
-        {
-            spring[a] = Vec3{};
-            flag[a] = 0;
-            if (keepRollingHistory)
-                rolling[a] = Vec3{};
-        }
-    activeSpring.resize(count);
-    activeMayBeActive.resize(count);
-    if (keepRollingHistory)
-        activeRolling.resize(count);
-}
-
-void NeighborList::forgetCandidates()
+void NeighborList::forgetCandidates(ContactHistoryStore& history)
 {
     for (auto* v : {&activeSlots, &activeFirst, &activeSecond, &activeDeferred})
         v->clear();
-    activeSpring.clear();
-    activeRolling.clear();
-    activeMayBeActive.clear();
     activeMass.clear();
+    history.clear();
 }
 
-ContactHistory NeighborList::slotHistory(std::size_t k) const
+std::size_t NeighborList::candidateOfSlot(std::size_t k) const
 {
     const std::uint64_t wanted = pairKey(first[k], second[k]);
     std::size_t lo = 0, hi = activeFirst.size(); // the candidates are sorted by (i, j)
@@ -210,21 +152,20 @@ ContactHistory NeighborList::slotHistory(std::size_t k) const
             hi = mid;
     }
     if (lo < activeFirst.size() && pairKey(activeFirst[lo], activeSecond[lo]) == wanted)
-        return candidateHistory(lo);
-    return ContactHistory{};
+        return lo;
+    return kNotCandidate;
 }
 
 std::size_t NeighborList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(first) + bytes(second) + bytes(activeSpring) + bytes(activeRolling) +
-           bytes(activeMayBeActive) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
+    return bytes(first) + bytes(second) + bytes(activeMass) + bytes(activeDeferred) + bytes(oldSlots_) +
            bytes(source_) + bytes(within_) + bytes(firstStart) + bytes(deferredIndex) + bytes(deferred) +
            bytes(incomingStart) + bytes(incomingEntry) + bytes(activeSlots) + bytes(activeFirst) +
            bytes(activeSecond) + bytes(positionAtBuild_) + bytes(positionAtActiveBuild_);
 }
 
-void NeighborList::rebuild(const ParticleStore& particles)
+void NeighborList::rebuild(const ParticleStore& particles, ContactHistoryStore& history)
 {
     ++rebuilds_;
     // The candidates keep their history and (i, j), which the next sub-list merges by key; the
@@ -247,7 +188,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
         deferredIndex.clear();
         deferred.clear();
         incomingEntry.clear();
-        forgetCandidates();
+        forgetCandidates(history);
         return;
     }
 
@@ -356,7 +297,7 @@ void NeighborList::rebuild(const ParticleStore& particles)
         // No slots: no force evaluation will rebuild the sub-list, so the old candidates would
         // wait for slots to come back, and hand a pair that was in contact before the pairs
         // separated its old history then.
-        forgetCandidates();
+        forgetCandidates(history);
 
     // Cross-block slots (the second particle in a later block), numbered in slot order; each
     // particle's incoming entries listed in slot order.

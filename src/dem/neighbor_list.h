@@ -1,17 +1,18 @@
-// Neighbour list with contact history (Verlet list on a cell grid).
+// Neighbour list (Verlet list on a cell grid), whose touching candidates key the pair contacts'
+// history (ContactHistoryStore).
 //
 // Design. Candidate pairs (i < j) whose gap is below `skin` are found by binning particles into
 // cubic cells of edge >= 2 r_max + skin and testing the 27 surrounding cells: O(N). The list is
 // kept sorted by (i, j) and rebuilt only when some particle has moved more than skin/2 since the
 // last build, so between rebuilds no pair can come into contact unseen.
 //
-// History. Contact history (tangential spring; rolling spring only when a rolling model keeps
-// one) lives only in the touching-candidate sub-list below: a slot outside it cannot be touching,
-// so its history is zero and is not stored (24-48 B x ~4.9 slots a particle saved). When the
-// sub-list is rebuilt, each new candidate takes the history of the old candidate with the same
-// slot, or, after a rebuild of the slots, with the same (i, j): both lists are sorted, so this is a
-// merge by key (Jolt's read-old/write-new contact cache; LAMMPS FixNeighHistory). History is also
-// zeroed the moment a contact opens (in the force loop), so a re-formed contact starts fresh.
+// History. The contact history is a store of its own (ContactHistoryStore, World::pairHistory),
+// with one entry per touching candidate of the sub-list below: a slot outside it cannot be
+// touching, so its history is zero and is not stored (24-48 B x ~4.9 slots a particle saved).
+// When the sub-list is rebuilt, the list re-keys the store: each new candidate takes the history
+// of the old candidate with the same slot, or, after a rebuild of the slots, with the same (i, j):
+// both lists are sorted, so this is a merge by key. History is also zeroed the moment a contact
+// opens (in the force loop), so a re-formed contact starts fresh.
 //
 // Force sums (STYLE 3.4). Particles are grouped in fixed blocks of `kBlockParticles` consecutive
 // indices, a partition that does not depend on the thread count. The force loop runs over whole
@@ -26,6 +27,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/contact_history.h"
 #include "dem/contact_law.h"
 #include "dem/particles.h"
 
@@ -44,8 +46,6 @@ class NeighborList
     // for every other model). Pairs within r_i + r_j + reach are passed to the contact law, which
     // decides whether they are formed, and the lists search that much farther.
     Real reach = 0;
-    bool keepRollingHistory = false; // store a rolling spring per slot (EPSD rolling model in use)
-
     std::vector<std::uint32_t> first;  // i of each pair (sorted, i < j)
     std::vector<std::uint32_t> second; // j of each pair
 
@@ -81,16 +81,11 @@ class NeighborList
     // result is the same bits as visiting every slot, since open slots contribute nothing.
     Real innerSkin = 0; // [m]
     std::vector<std::uint32_t> activeSlots;
-    // Per candidate a (slot activeSlots[a]), what the force loop reads and writes, in sequence
-    // instead of scattered over all slots: first[] and second[]; the contact history (tangential
-    // spring [m], rolling spring [N m] only if keepRollingHistory, and whether the contact is formed
-    // (so its history may be non-zero), 0 or 1 (the selection pass reads four flags as bits; for a
-    // JKR pair it is the state of the touch criterion's hysteresis): cleared when it is found open,
-    // so an open candidate is written once, not every step; m* = m_i m_j / (m_i + m_j) [kg] (the contact
-    // law's expression, so the same bits); the slot's deferredIndex.
+    // Per candidate a (slot activeSlots[a]), what the force loop reads, in sequence instead of
+    // scattered over all slots: first[] and second[] (the key of its history entry a);
+    // m* = m_i m_j / (m_i + m_j) [kg] (the contact law's expression, so the same bits); the slot's
+    // deferredIndex.
     std::vector<std::uint32_t> activeFirst, activeSecond;
-    std::vector<Vec3> activeSpring, activeRolling;
-    std::vector<std::uint8_t> activeMayBeActive;
     std::vector<Real> activeMass;
     std::vector<std::uint32_t> activeDeferred;
 
@@ -110,31 +105,24 @@ class NeighborList
     /// particles by the caller; also marks the candidate sub-list stale if some particle moved
     /// more than innerSkin/2 since it was built. Called once per step.
     bool checkMotion(std::size_t particleCount, Real largestMotion2, Real largestActiveMotion2);
-    /// Rebuilds the candidate sub-list if stale, at the current positions, carrying each
-    /// continuing contact's history; a candidate left out that was in contact just opened, so its
-    /// history is dropped and its deferred entry zeroed.
-    void refreshActiveSlots(const ParticleStore& particles);
-    /// Rebuilds the pair slots; the history reaches the next sub-list by (i, j).
-    void rebuild(const ParticleStore& particles);
+    /// Rebuilds the candidate sub-list if stale, at the current positions, and re-keys `history`
+    /// (its entries are the candidates') so that each continuing contact keeps its history; a
+    /// candidate left out that was in contact just opened, so its history is dropped and its
+    /// deferred entry zeroed.
+    void refreshActiveSlots(const ParticleStore& particles, ContactHistoryStore& history);
+    /// Rebuilds the pair slots; the history reaches the next sub-list by (i, j) (with no slots
+    /// at all, `history` is emptied).
+    void rebuild(const ParticleStore& particles, ContactHistoryStore& history);
 
-    /// History of slot k as the contact law takes it: its candidate's, or zero if it is not a
-    /// candidate (then it is open). A look-up by (i, j), for tests and output, not the force loop.
-    ContactHistory slotHistory(std::size_t k) const;
+    /// The candidate of slot k (its entry in the history store), or kNotCandidate if it is not
+    /// one (then it is open). A look-up by (i, j), for tests and output, not the force loop.
+    static constexpr std::size_t kNotCandidate = ~std::size_t{0};
+    std::size_t candidateOfSlot(std::size_t k) const;
 
-    /// History of candidate a as the contact law takes it.
-    ContactHistory candidateHistory(std::size_t a) const
-    {
-        return historyAt(activeSpring, activeRolling, keepRollingHistory, a);
-    }
-    void setCandidateHistory(std::size_t a, const ContactHistory& h)
-    {
-        storeHistoryAt(activeSpring, activeRolling, keepRollingHistory, a, h);
-    }
     /// Candidate a is found open: its history is forgotten, its deferred entry (if any) zeroed.
-    void openCandidate(std::size_t a)
+    void openCandidate(std::size_t a, ContactHistoryStore& history)
     {
-        storeHistoryAt(activeSpring, activeRolling, keepRollingHistory, a, ContactHistory{});
-        activeMayBeActive[a] = 0;
+        history.forget(a);
         zeroDeferred(activeDeferred[a]);
     }
 
@@ -156,14 +144,12 @@ class NeighborList
     }
     /// The new sub-list's slots into activeSlots and, per candidate, the old candidate whose
     /// history it continues into source_ (kNoSource if none); zeroes the deferred entries of old
-    /// candidates that are left out while they may be in contact.
-    void selectCandidates(const ParticleStore& particles);
-    /// Moves the candidates' history to their new places (source_), zero where there is none.
-    void carryHistory(std::size_t oldCount);
+    /// candidates that are left out while they may be in contact (history.formed).
+    void selectCandidates(const ParticleStore& particles, const ContactHistoryStore& history);
     /// Drops every candidate and its history (the slots are gone).
-    void forgetCandidates();
+    void forgetCandidates(ContactHistoryStore& history);
 
-    static constexpr std::uint32_t kNoSource = 0xffffffffu;
+    static constexpr std::uint32_t kNoSource = ContactHistoryStore::kNoSource;
     bool slotsRebuilt_ = false; // the slots were rebuilt since the sub-list was: carry by (i, j)
     std::vector<std::uint32_t> oldSlots_, source_; // scratch of the sub-list rebuild (grow-only)
     std::vector<std::uint8_t> within_;             // per slot, within the inner skin (scratch)

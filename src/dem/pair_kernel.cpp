@@ -21,7 +21,7 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
                                        std::size_t padded)
 {
     const ParticleStore& p = world.particles;
-    const NeighborList& list = world.neighbors;
+    const ContactHistoryStore& history = world.pairHistory;
     for (std::size_t m = 0; m < padded; ++m)
     {
         const std::uint32_t i = b.i[m], j = b.j[m];
@@ -33,7 +33,7 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
         in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
         in.rollingInertia =
             pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
-        law.setRollingInputs(m, in, list.keepRollingHistory ? list.activeRolling[b.candidate[m]] : Vec3{});
+        law.setRollingInputs(m, in, history.keepRolling ? history.rolling[b.candidate[m]] : Vec3{});
     }
 }
 
@@ -270,10 +270,10 @@ ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint
 }
 
 /// Touching candidate k through the general contact law (any model), added into the sink.
-void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
-                       WorstOverlap& worst)
+void pairContactScalar(const World& world, const PairSink& sink, Real dt, std::size_t k, WorstOverlap& worst)
 {
     const ParticleStore& p = world.particles;
+    const NeighborList& list = world.neighbors;
     const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
     const Real ri = p.radius[i], rj = p.radius[j];
     const PairParams& params = world.pairs(p.material[i], p.material[j]);
@@ -283,11 +283,9 @@ void pairContactScalar(const World& world, NeighborList& list, const PairSink& s
     const ContactInput in = pairContactInput(p, i, j, f, list.activeMass[k]);
     const Real leverI = f.leverI, leverJ = f.leverJ;
 
-    ContactHistory history = list.candidateHistory(k);
-    history.formed = sink.mayBeActive[k];
+    ContactHistory history = sink.history(k);
     const ContactOutput out = evaluateContact(params, in, history, dt);
-    list.setCandidateHistory(k, history);
-    sink.mayBeActive[k] = history.formed != 0;
+    sink.setHistory(k, history);
 
     const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
     sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,

@@ -35,17 +35,32 @@ struct PairSink
     PaddedVec3* torque;                    // [N m]
     const std::uint32_t* deferredIndex;    // per candidate, or NeighborList::kInBlock
     NeighborList::DeferredShare* deferred; // on the second particle of a cross-block slot
-    Vec3* spring;                          // tangential spring per candidate [m]
-    Vec3* rolling;                         // rolling spring per candidate [N m], or null if none is kept
-    std::uint8_t* mayBeActive;             // per candidate
+    // The contact history per candidate (World::pairHistory, dem/contact_history.h):
+    Vec3* spring;              // tangential spring [m]
+    Vec3* rolling;             // rolling spring [N m], or null if none is kept
+    std::uint8_t* mayBeActive; // whether the contact may be formed (ContactHistoryStore::formed)
 
     explicit PairSink(World& world)
         : force(world.particles.force.data()), torque(world.particles.torque.data()),
           deferredIndex(world.neighbors.activeDeferred.data()), deferred(world.neighbors.deferred.data()),
-          spring(world.neighbors.activeSpring.data()),
-          rolling(world.neighbors.keepRollingHistory ? world.neighbors.activeRolling.data() : nullptr),
-          mayBeActive(world.neighbors.activeMayBeActive.data())
+          spring(world.pairHistory.spring.data()),
+          rolling(world.pairHistory.keepRolling ? world.pairHistory.rolling.data() : nullptr),
+          mayBeActive(world.pairHistory.formed.data())
     {
+    }
+
+    /// Candidate k's history as the contact law takes it, and stores it back (ContactHistoryStore::at
+    /// and set, through the sink's bases).
+    ContactHistory history(std::size_t k) const
+    {
+        return {spring[k], rolling ? rolling[k] : Vec3{}, Real(mayBeActive[k])};
+    }
+    void setHistory(std::size_t k, const ContactHistory& h) const
+    {
+        spring[k] = h.tangentialSpring;
+        if (rolling)
+            rolling[k] = h.rollingSpring;
+        mayBeActive[k] = h.formed != 0;
     }
 
     static void add(PaddedVec3& sum, const Vec3& v)
@@ -97,7 +112,6 @@ ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint
                               const ContactFrameOf<Real>& frame, Real effectiveMass);
 
 /// Touching candidate k through the general contact law (any model), added into the sink.
-void pairContactScalar(const World& world, NeighborList& list, const PairSink& sink, Real dt, std::size_t k,
-                       WorstOverlap& worst);
+void pairContactScalar(const World& world, const PairSink& sink, Real dt, std::size_t k, WorstOverlap& worst);
 
 } // namespace veridem::dem

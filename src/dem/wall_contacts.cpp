@@ -19,7 +19,8 @@ bool WallContactList::needsRebuild(const std::vector<Wall>& walls, Real skin) co
     return false;
 }
 
-void WallContactList::rebuild(const ParticleStore& particles, const std::vector<Wall>& walls, Real skin)
+void WallContactList::rebuild(const ParticleStore& particles, const std::vector<Wall>& walls, Real skin,
+                              ContactHistoryStore& history)
 {
     const std::size_t n = particles.size();
     wallDisplacementAtBuild_.resize(walls.size());
@@ -53,9 +54,8 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     }
     const std::size_t count = newParticle.size();
 
-    // Merge history by key.
-    std::vector<Vec3> newTangential(count), newRolling(keepRollingHistory ? count : 0);
-    const bool oldHasRolling = rollingSpring.size() == particle.size();
+    // Re-key the history: each slot's source is the old slot with the same (particle, wall).
+    std::vector<std::uint32_t> source(count, ContactHistoryStore::kNoSource);
     const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
     std::size_t old = 0;
     for (std::size_t k = 0; k < count; ++k)
@@ -64,16 +64,13 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
         while (old < particle.size() && key(particle[old], wall[old]) < wanted)
             ++old;
         if (old < particle.size() && key(particle[old], wall[old]) == wanted)
-        {
-            newTangential[k] = tangentialSpring[old];
-            if (keepRollingHistory && oldHasRolling)
-                newRolling[k] = rollingSpring[old];
-        }
+            source[k] = static_cast<std::uint32_t>(old);
     }
+    if (history.size() != particle.size()) // (never built: no history to carry)
+        history.clear();
+    history.carry(source.data(), count);
     particle.swap(newParticle);
     wall.swap(newWall);
-    tangentialSpring.swap(newTangential);
-    rollingSpring.swap(newRolling);
     start.assign(n + 1, 0);
     for (std::size_t k = 0; k < count; ++k)
         ++start[particle[k] + 1];
@@ -81,11 +78,11 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
         start[i + 1] += start[i];
 }
 
-Vec3& WallContactList::tangentialSpringOf(std::uint32_t particleIndex, std::uint32_t wallIndex)
+std::size_t WallContactList::slotOf(std::uint32_t particleIndex, std::uint32_t wallIndex) const
 {
     for (std::size_t k = 0; k < particle.size(); ++k)
         if (particle[k] == particleIndex && wall[k] == wallIndex)
-            return tangentialSpring[k];
+            return k;
     throw InputError("particle " + std::to_string(particleIndex) + " has no contact slot with wall " +
                      std::to_string(wallIndex) + " (it is not within the neighbour skin of it)");
 }
@@ -93,8 +90,7 @@ Vec3& WallContactList::tangentialSpringOf(std::uint32_t particleIndex, std::uint
 std::size_t WallContactList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(particle) + bytes(wall) + bytes(tangentialSpring) + bytes(rollingSpring) + bytes(start) +
-           bytes(wallDisplacementAtBuild_);
+    return bytes(particle) + bytes(wall) + bytes(start) + bytes(wallDisplacementAtBuild_);
 }
 
 } // namespace veridem::dem

@@ -79,7 +79,8 @@ void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const 
 ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
-    WallContactList& list = world.wallContacts;
+    const WallContactList& list = world.wallContacts;
+    ContactHistoryStore& history = world.wallHistory;
     ContactHealth health{0, 0, false, 0};
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
@@ -94,8 +95,8 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         {
             const std::uint32_t i = b.particle[q];
             const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
-            list.setHistory(b.slot[q],
-                            ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
+            history.set(b.slot[q],
+                        ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
             const Vec3 arm = wallArm(p.radius[i], normal);
             addWallContact(p, i, b.normalForce[q] * normal + tangential,
                            b.rollingTorqueOf(q) + cross(arm, tangential), b.overlap[q], health);
@@ -110,20 +111,19 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         const WallGap gap = wallGap(wall, p.position[i], p.radius[i]);
         if (!gap.touching)
         {
-            list.setHistory(k, ContactHistory{});
+            history.forget(k);
             continue;
         }
         ++health.touching;
         Vec3 arm;
         ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
-        b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass,
-                    list.tangentialSpring[k]);
+        b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass, history.spring[k]);
         if (!uniform)
             addContactLaw(b, m, world.pairs(p.material[i], wall.material));
         if (!uniform || uniform->models != 1u) // (as wallContactScalar)
         {
             in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], p.radius[i]);
-            b.setRollingInputs(m, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
+            b.setRollingInputs(m, in, history.keepRolling ? history.rolling[k] : Vec3{});
         }
         if (++m == kBatch)
             run();
@@ -168,6 +168,7 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
 {
     const ParticleStore& p = world.particles;
     const WallContactList& list = world.wallContacts;
+    const ContactHistoryStore& history = world.wallHistory;
     for (std::size_t q = 0; q < count; ++q)
     {
         const std::uint32_t i = b.particle[q];
@@ -179,7 +180,7 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
         in.effectiveRadius = r;
         in.spinInertia = 1.0 / p.invInertia[i];
         in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], r);
-        b.setRollingInputs(q, in, list.keepRollingHistory ? list.rollingSpring[k] : Vec3{});
+        b.setRollingInputs(q, in, history.keepRolling ? history.rolling[k] : Vec3{});
     }
 }
 
@@ -192,7 +193,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
                                                      std::size_t end, const PlaneFrame* frames)
 {
     ParticleStore& p = world.particles;
-    WallContactList& list = world.wallContacts;
+    const WallContactList& list = world.wallContacts;
+    ContactHistoryStore& history = world.wallHistory;
     ContactHealth health{0, 0, false, 0};
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
@@ -206,8 +208,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     PaddedVec3* const torque = p.torque.data();
     const std::uint32_t* const particle = list.particle.data();
     const std::uint32_t* const wallOf = list.wall.data();
-    Vec3* const spring = list.tangentialSpring.data();
-    const bool rolling = list.keepRollingHistory;
+    Vec3* const spring = history.spring.data();
+    const bool rolling = history.keepRolling;
     const Real halfStep = 0.5 * dt;
     LawBatch b;
     std::size_t m = 0;
@@ -227,8 +229,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             const std::uint32_t i = b.particle[q];
             const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
             if (rolling)
-                list.setHistory(b.slot[q], ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]},
-                                                          b.rollingSpringOf(q)});
+                history.set(b.slot[q],
+                            ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
             else
                 spring[b.slot[q]] = {b.springX[q], b.springY[q], b.springZ[q]};
             const Vec3 arm = wallArm(radius[i], normal);
@@ -256,7 +258,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         {
             spring[k] = Vec3{};
             if (rolling)
-                list.setHistory(k, ContactHistory{});
+                history.forget(k);
             continue;
         }
         ++health.touching;
@@ -292,12 +294,12 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
                                           const ParticleState& s, Vec3& force, Vec3& torque,
                                           ContactHealth& health)
 {
-    WallContactList& list = world.wallContacts;
-    const Wall& wall = world.walls[list.wall[k]];
+    const Wall& wall = world.walls[world.wallContacts.wall[k]];
+    ContactHistoryStore& store = world.wallHistory;
     const WallGap gap = wallGap(wall, s.position, s.radius);
     if (!gap.touching)
     {
-        list.setHistory(k, ContactHistory{});
+        store.forget(k);
         return;
     }
     ++health.touching;
@@ -307,9 +309,9 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
     if (params.rollingModel == RollingModel::Epsd)
         in.rollingInertia = wallRollingInertia(in.spinInertia, s.mass, s.radius);
 
-    ContactHistory history = list.history(k);
+    ContactHistory history = store.at(k);
     const ContactOutput out = evaluateContact(params, in, history, dt);
-    list.setHistory(k, history);
+    store.set(k, history);
     force += out.force;
     torque += out.rollingTorque + cross(arm, out.tangentialForce);
     foldWallOverlap(i, in.overlap, s.radius, health);

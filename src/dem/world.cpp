@@ -92,8 +92,8 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
 
 [[gnu::noinline, gnu::cold]] void rebuildContactLists(World& world)
 {
-    world.neighbors.rebuild(world.particles);
-    world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin);
+    world.neighbors.rebuild(world.particles, world.pairHistory);
+    world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
 }
 
 /// Particles per sub-pass of stage 4: their forces, torques, velocities and wall contacts
@@ -384,8 +384,8 @@ void prepare(World& world)
     for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
             rollingHistory = rollingHistory || world.pairs(a, b).rollingModel == RollingModel::Epsd;
-    world.neighbors.keepRollingHistory = rollingHistory;
-    world.wallContacts.keepRollingHistory = rollingHistory;
+    world.pairHistory.keepRolling = rollingHistory;
+    world.wallHistory.keepRolling = rollingHistory;
     world.neighbors.reach = pairTouchReach(world);
     rebuildContactLists(world);
     world.particles.refreshPositionRadius();

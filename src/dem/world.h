@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/contact_history.h"
 #include "dem/exec/block_partition.h"
 #include "dem/materials.h"
 #include "dem/neighbor_list.h"
@@ -136,8 +137,12 @@ struct World
     std::vector<Wall> walls;
     std::vector<Material> materials;
     PairTable pairs;
-    NeighborList neighbors;
-    WallContactList wallContacts;
+    NeighborList neighbors;       // pair slots and touching candidates (the keys of pairHistory)
+    WallContactList wallContacts; // particle-wall slots (the keys of wallHistory)
+    // The contacts' history, updated by the force stage (dem/contact_history.h): entry a of
+    // pairHistory is touching candidate a's, entry k of wallHistory wall slot k's.
+    ContactHistoryStore pairHistory{true};
+    ContactHistoryStore wallHistory;
     Vec3 gravity{0, 0, -9.81}; // [m/s^2]
     Real time = 0;             // [s]
     std::uint64_t stepCount = 0;

@@ -5,16 +5,16 @@
 namespace veridem::dem
 {
 
-/// The private state of the contact lists, for the checkpoint (friend of NeighborList and
-/// WallContactList). The record order here is the file's.
+/// The private state of the contact lists, with their contacts' history stores, for the checkpoint
+/// (friend of NeighborList and WallContactList). The record order here is the file's.
 struct CheckpointAccess
 {
-    static void write(io::CheckpointWriter& out, const NeighborList& n)
+    static void write(io::CheckpointWriter& out, const NeighborList& n, const ContactHistoryStore& h)
     {
         out.value("skin", n.skin);
         out.value("iskn", n.innerSkin);
         out.value("rech", n.reach);
-        out.value("nbRh", std::uint8_t(n.keepRollingHistory));
+        out.value("nbRh", std::uint8_t(h.keepRolling));
         out.array("nbFi", n.first);
         out.array("nbSe", n.second);
         out.array("nbFS", n.firstStart);
@@ -25,9 +25,9 @@ struct CheckpointAccess
         out.array("acSl", n.activeSlots);
         out.array("acFi", n.activeFirst);
         out.array("acSe", n.activeSecond);
-        out.array("acSp", n.activeSpring);
-        out.array("acRo", n.activeRolling);
-        out.array("acMB", n.activeMayBeActive);
+        out.array("acSp", h.spring);
+        out.array("acRo", h.rolling);
+        out.array("acMB", h.formed);
         out.array("acMa", n.activeMass);
         out.array("acDe", n.activeDeferred);
         out.value("nbSR", std::uint8_t(n.slotsRebuilt_));
@@ -39,12 +39,12 @@ struct CheckpointAccess
         out.value("nbRB", std::uint64_t(n.rebuilds_));
     }
 
-    static void read(io::CheckpointReader& in, NeighborList& n, std::size_t particles)
+    static void read(io::CheckpointReader& in, NeighborList& n, ContactHistoryStore& h, std::size_t particles)
     {
         in.value("skin", n.skin);
         in.value("iskn", n.innerSkin);
         in.value("rech", n.reach);
-        n.keepRollingHistory = in.value<std::uint8_t>("nbRh") != 0;
+        h.keepRolling = in.value<std::uint8_t>("nbRh") != 0;
         in.array("nbFi", n.first);
         in.array("nbSe", n.second);
         in.array("nbFS", n.firstStart);
@@ -55,9 +55,9 @@ struct CheckpointAccess
         in.array("acSl", n.activeSlots);
         in.array("acFi", n.activeFirst);
         in.array("acSe", n.activeSecond);
-        in.array("acSp", n.activeSpring);
-        in.array("acRo", n.activeRolling);
-        in.array("acMB", n.activeMayBeActive);
+        in.array("acSp", h.spring);
+        in.array("acRo", h.rolling);
+        in.array("acMB", h.formed);
         in.array("acMa", n.activeMass);
         in.array("acDe", n.activeDeferred);
         n.slotsRebuilt_ = in.value<std::uint8_t>("nbSR") != 0;
@@ -67,34 +67,35 @@ struct CheckpointAccess
         in.value("nbAA", n.activeAge_);
         n.activeRebuilds_ = static_cast<std::size_t>(in.value<std::uint64_t>("nbAR"));
         n.rebuilds_ = static_cast<std::size_t>(in.value<std::uint64_t>("nbRB"));
-        check(in, n, particles);
+        check(in, n, h, particles);
     }
 
-    static void write(io::CheckpointWriter& out, const WallContactList& w)
+    static void write(io::CheckpointWriter& out, const WallContactList& w, const ContactHistoryStore& h)
     {
-        out.value("wcRh", std::uint8_t(w.keepRollingHistory));
+        out.value("wcRh", std::uint8_t(h.keepRolling));
         out.array("wcPa", w.particle);
         out.array("wcWa", w.wall);
-        out.array("wcTS", w.tangentialSpring);
-        out.array("wcRS", w.rollingSpring);
+        out.array("wcTS", h.spring);
+        out.array("wcRS", h.rolling);
         out.array("wcSt", w.start);
         out.array("wcDB", w.wallDisplacementAtBuild_);
     }
 
-    static void read(io::CheckpointReader& in, WallContactList& w, std::size_t particles, std::size_t walls)
+    static void read(io::CheckpointReader& in, WallContactList& w, ContactHistoryStore& h,
+                     std::size_t particles, std::size_t walls)
     {
-        w.keepRollingHistory = in.value<std::uint8_t>("wcRh") != 0;
+        h.keepRolling = in.value<std::uint8_t>("wcRh") != 0;
         in.array("wcPa", w.particle);
         in.array("wcWa", w.wall);
-        in.array("wcTS", w.tangentialSpring);
-        in.array("wcRS", w.rollingSpring);
+        in.array("wcTS", h.spring);
+        in.array("wcRS", h.rolling);
         in.array("wcSt", w.start);
         in.array("wcDB", w.wallDisplacementAtBuild_);
         const std::size_t slots = w.particle.size();
-        bool ok = w.wall.size() == slots && w.tangentialSpring.size() == slots &&
-                  w.rollingSpring.size() == (w.keepRollingHistory ? slots : w.rollingSpring.size()) &&
-                  (w.rollingSpring.empty() || w.rollingSpring.size() == slots) &&
-                  w.start.size() == particles + 1 && w.wallDisplacementAtBuild_.size() <= walls;
+        bool ok = w.wall.size() == slots && h.spring.size() == slots &&
+                  h.rolling.size() == (h.keepRolling ? slots : h.rolling.size()) &&
+                  (h.rolling.empty() || h.rolling.size() == slots) && w.start.size() == particles + 1 &&
+                  w.wallDisplacementAtBuild_.size() <= walls;
         ok = ok && below(w.particle, particles) && below(w.wall, walls) && offsets(w.start, slots);
         if (!ok)
             in.fail("is corrupt: the wall-contact list does not fit the scene");
@@ -121,17 +122,18 @@ struct CheckpointAccess
 
     /// Every index in range and every size consistent, so a crafted file cannot make the step read
     /// out of bounds (the checksum already catches accidental damage).
-    static void check(io::CheckpointReader& in, const NeighborList& n, std::size_t particles)
+    static void check(io::CheckpointReader& in, const NeighborList& n, const ContactHistoryStore& h,
+                      std::size_t particles)
     {
         const std::size_t slots = n.first.size(), entries = n.deferred.size(),
                           candidates = n.activeSlots.size();
         bool ok = n.second.size() == slots && n.deferredIndex.size() == slots &&
                   n.firstStart.size() == particles + 1 && n.incomingStart.size() == particles + 1 &&
                   n.incomingEntry.size() == entries && n.activeFirst.size() == candidates &&
-                  n.activeSecond.size() == candidates && n.activeSpring.size() == candidates &&
-                  (n.activeRolling.empty() || n.activeRolling.size() == candidates) &&
-                  n.activeMayBeActive.size() == candidates && n.activeMass.size() == candidates &&
-                  n.activeDeferred.size() == candidates &&
+                  n.activeSecond.size() == candidates && h.spring.size() == candidates &&
+                  (h.rolling.empty() || h.rolling.size() == candidates) &&
+                  (!h.keepRolling || h.rolling.size() == candidates) && h.formed.size() == candidates &&
+                  n.activeMass.size() == candidates && n.activeDeferred.size() == candidates &&
                   (n.positionAtBuild_.empty() || n.positionAtBuild_.size() == particles) &&
                   (n.positionAtActiveBuild_.empty() || n.positionAtActiveBuild_.size() == particles);
         ok = ok && below(n.first, particles) && below(n.second, particles) &&
@@ -241,8 +243,8 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
     out.array("wAng", angularVelocity);
     out.array("wClk", clock);
 
-    dem::CheckpointAccess::write(out, world.neighbors);
-    dem::CheckpointAccess::write(out, world.wallContacts);
+    dem::CheckpointAccess::write(out, world.neighbors, world.pairHistory);
+    dem::CheckpointAccess::write(out, world.wallContacts, world.wallHistory);
     out.value("enLg", std::uint8_t(ledger != nullptr));
     if (ledger)
         out.array("enSt", ledgerValues(*ledger));
@@ -297,8 +299,8 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
         w.clock = clock[k];
     }
 
-    dem::CheckpointAccess::read(in, world.neighbors, n);
-    dem::CheckpointAccess::read(in, world.wallContacts, n, walls);
+    dem::CheckpointAccess::read(in, world.neighbors, world.pairHistory, n);
+    dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, walls);
     const bool hasLedger = in.value<std::uint8_t>("enLg") != 0;
     if (hasLedger != (ledger != nullptr))
         in.fail(hasLedger ? "keeps an energy ledger, the scene does not"

@@ -96,7 +96,7 @@ TEST(Determinism, OneTwoAndThreeThreadsGiveTheSameBitsAfter1000Steps)
         EXPECT_TRUE(sameBits(one.particles.angularVelocity, other.particles.angularVelocity)) << threads;
         EXPECT_TRUE(sameBits(one.particles.force, other.particles.force)) << threads;
         EXPECT_EQ(one.neighbors.activeSlots, other.neighbors.activeSlots) << threads;
-        EXPECT_TRUE(sameBits(one.neighbors.activeSpring, other.neighbors.activeSpring)) << threads; // history
+        EXPECT_TRUE(sameBits(one.pairHistory.spring, other.pairHistory.spring)) << threads; // history
         EXPECT_EQ(one.health.maxOverlapRatio, other.health.maxOverlapRatio) << threads;
         EXPECT_EQ(one.health.worstParticle, other.health.worstParticle) << threads;
     }
@@ -126,15 +126,15 @@ TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
         EXPECT_TRUE(sameBits(one.particles.position, w->particles.position));
         EXPECT_TRUE(sameBits(one.particles.velocity, w->particles.velocity));
         EXPECT_TRUE(sameBits(one.particles.angularVelocity, w->particles.angularVelocity));
-        EXPECT_TRUE(sameBits(one.neighbors.activeSpring, w->neighbors.activeSpring));
+        EXPECT_TRUE(sameBits(one.pairHistory.spring, w->pairHistory.spring));
         EXPECT_EQ(one.health.maxOverlapRatio, w->health.maxOverlapRatio);
         EXPECT_EQ(one.health.worstParticle, w->health.worstParticle);
         EXPECT_EQ(one.health.touchingPairs, w->health.touchingPairs);
     }
 }
 
-/// The lane contact path (pair_kernel.cpp, wall_forces.cpp) performs the scalar contact law's operations lane by lane:
-/// the state after 1000 steps is the same to the bit with it and without it, for every
+/// The lane contact path (pair_kernel.cpp, wall_forces.cpp) performs the scalar contact law's operations lane
+/// by lane: the state after 1000 steps is the same to the bit with it and without it, for every
 /// instruction-set variant this CPU runs.
 TEST(Determinism, BatchedContactPathMatchesScalarPath)
 {
@@ -157,7 +157,7 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
         EXPECT_TRUE(sameBits(batched.particles.velocity, scalar.particles.velocity)) << variant;
         EXPECT_TRUE(sameBits(batched.particles.angularVelocity, scalar.particles.angularVelocity)) << variant;
         EXPECT_EQ(batched.neighbors.activeSlots, scalar.neighbors.activeSlots) << variant;
-        EXPECT_TRUE(sameBits(batched.neighbors.activeSpring, scalar.neighbors.activeSpring)) << variant;
+        EXPECT_TRUE(sameBits(batched.pairHistory.spring, scalar.pairHistory.spring)) << variant;
         EXPECT_TRUE(sameBits(batched.particles.torque, scalar.particles.torque)) << variant;
         EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << variant;
     }
@@ -185,7 +185,7 @@ TEST(Determinism, AdvanceGivesTheBitsOfStepCalls)
         EXPECT_TRUE(sameBits(advanced.particles.velocity, stepped.particles.velocity)) << threads;
         EXPECT_TRUE(sameBits(advanced.particles.angularVelocity, stepped.particles.angularVelocity))
             << threads;
-        EXPECT_TRUE(sameBits(advanced.neighbors.activeSpring, stepped.neighbors.activeSpring)) << threads;
+        EXPECT_TRUE(sameBits(advanced.pairHistory.spring, stepped.pairHistory.spring)) << threads;
         // The last step is not fused: the rows hold the step's sums, as after step().
         EXPECT_TRUE(sameBits(advanced.particles.force, stepped.particles.force)) << threads;
         EXPECT_TRUE(sameBits(advanced.particles.torque, stepped.particles.torque)) << threads;
@@ -241,8 +241,7 @@ TEST(Determinism, PlaneWallPassMatchesScalarPathOnAMovingDisk)
         EXPECT_TRUE(sameBits(batched.particles.position, scalar.particles.position)) << variant;
         EXPECT_TRUE(sameBits(batched.particles.velocity, scalar.particles.velocity)) << variant;
         EXPECT_TRUE(sameBits(batched.particles.angularVelocity, scalar.particles.angularVelocity)) << variant;
-        EXPECT_TRUE(sameBits(batched.wallContacts.tangentialSpring, scalar.wallContacts.tangentialSpring))
-            << variant;
+        EXPECT_TRUE(sameBits(batched.wallHistory.spring, scalar.wallHistory.spring)) << variant;
         EXPECT_EQ(batched.health.touchingWalls, scalar.health.touchingWalls) << variant;
         EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << variant;
     }
@@ -334,9 +333,9 @@ TEST(Determinism, IntegrationLanesMatchScalarLoops)
     }
 }
 
-/// The block sums (forces.cpp, exec/cross_block_sums.cpp) add every touching contact exactly once, +F on i and -F on j, with
-/// the torques -l_i (n x Ft) and -l_j (n x Ft): they equal a plain serial loop over the slots that
-/// calls the contact law on a copy of each slot's history. Only the order of the sums and the
+/// The block sums (forces.cpp, exec/cross_block_sums.cpp) add every touching contact exactly once, +F on i
+/// and -F on j, with the torques -l_i (n x Ft) and -l_j (n x Ft): they equal a plain serial loop over the
+/// slots that calls the contact law on a copy of each slot's history. Only the order of the sums and the
 /// rounding of 1/d differ, so the tolerance is round-off: 1e-12 of the largest force (torque) in
 /// the box (a sum of ~10 terms of double precision, relative error ~1e-15 each).
 TEST(Determinism, BlockSumsEqualAPlainSerialLoopOverSlots)
@@ -372,7 +371,9 @@ TEST(Determinism, BlockSumsEqualAPlainSerialLoopOverSlots)
                               cross(leverI * p.angularVelocity[i] + leverJ * p.angularVelocity[j], in.normal);
         in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
         in.effectiveMass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-        ContactHistory history = list.slotHistory(k);
+        const std::size_t candidate = list.candidateOfSlot(k);
+        ContactHistory history =
+            candidate == NeighborList::kNotCandidate ? ContactHistory{} : reference.pairHistory.at(candidate);
         const ContactOutput out = evaluateContact(reference.pairs(0, 0), in, history, dt);
         const Vec3 tt = cross(in.normal, out.tangentialForce);
         p.force[i] += out.force;
@@ -511,16 +512,12 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
                 EXPECT_TRUE(sameBits(batched.particles.velocity, scalar.particles.velocity)) << what;
                 EXPECT_TRUE(sameBits(batched.particles.angularVelocity, scalar.particles.angularVelocity))
                     << what;
-                EXPECT_TRUE(sameBits(batched.neighbors.activeSpring, scalar.neighbors.activeSpring)) << what;
-                EXPECT_TRUE(sameBits(batched.neighbors.activeRolling, scalar.neighbors.activeRolling))
-                    << what;
-                EXPECT_TRUE(sameBits(batched.neighbors.activeMayBeActive, scalar.neighbors.activeMayBeActive))
+                EXPECT_TRUE(sameBits(batched.pairHistory.spring, scalar.pairHistory.spring)) << what;
+                EXPECT_TRUE(sameBits(batched.pairHistory.rolling, scalar.pairHistory.rolling)) << what;
+                EXPECT_TRUE(sameBits(batched.pairHistory.formed, scalar.pairHistory.formed))
                     << what; // (the JKR formed states)
-                EXPECT_TRUE(
-                    sameBits(batched.wallContacts.tangentialSpring, scalar.wallContacts.tangentialSpring))
-                    << what;
-                EXPECT_TRUE(sameBits(batched.wallContacts.rollingSpring, scalar.wallContacts.rollingSpring))
-                    << what;
+                EXPECT_TRUE(sameBits(batched.wallHistory.spring, scalar.wallHistory.spring)) << what;
+                EXPECT_TRUE(sameBits(batched.wallHistory.rolling, scalar.wallHistory.rolling)) << what;
                 EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << what;
             }
         }

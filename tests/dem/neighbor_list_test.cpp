@@ -29,8 +29,9 @@ TEST(NeighborList, MatchesBruteForce)
 {
     const ParticleStore p = randomParticles(2000, 1);
     NeighborList list;
+    ContactHistoryStore history{true};
     list.skin = 0.3e-3;
-    list.rebuild(p);
+    list.rebuild(p, history);
     std::set<std::pair<std::uint32_t, std::uint32_t>> expected;
     for (std::uint32_t i = 0; i < p.size(); ++i)
         for (std::uint32_t j = i + 1; j < p.size(); ++j)
@@ -59,32 +60,34 @@ TEST(NeighborList, HistorySurvivesRebuild)
 {
     ParticleStore p = randomParticles(500, 2);
     NeighborList list;
+    ContactHistoryStore history{true};
     list.skin = 0.5e-3;
-    list.rebuild(p);
-    list.refreshActiveSlots(p);
+    list.rebuild(p, history);
+    list.refreshActiveSlots(p, history);
     ASSERT_GT(list.activeSlots.size(), 0u);
     std::set<std::pair<std::uint32_t, std::uint32_t>> held;
     for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
     {
-        list.activeSpring[a] = keyValue(list.activeFirst[a], list.activeSecond[a]);
+        history.spring[a] = keyValue(list.activeFirst[a], list.activeSecond[a]);
         held.insert({list.activeFirst[a], list.activeSecond[a]});
     }
-    list.rebuild(p);
+    list.rebuild(p, history);
     // Between the rebuild and the next sub-list, a slot's history is found by (i, j).
     for (std::size_t k = 0; k < list.size(); ++k)
     {
         const bool wasHeld = held.count({list.first[k], list.second[k]}) > 0;
-        EXPECT_EQ(list.slotHistory(k).tangentialSpring,
+        const std::size_t a = list.candidateOfSlot(k);
+        EXPECT_EQ(a == NeighborList::kNotCandidate ? Vec3{} : history.spring[a],
                   wasHeld ? keyValue(list.first[k], list.second[k]) : Vec3{});
     }
-    list.refreshActiveSlots(p);
+    list.refreshActiveSlots(p, history);
     std::size_t carried = 0;
     for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
     {
         const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
         const bool wasHeld = held.count({i, j}) > 0;
         carried += wasHeld ? 1 : 0;
-        EXPECT_EQ(list.activeSpring[a], wasHeld ? keyValue(i, j) : Vec3{}) << i << " " << j;
+        EXPECT_EQ(history.spring[a], wasHeld ? keyValue(i, j) : Vec3{}) << i << " " << j;
     }
     EXPECT_EQ(carried, held.size()); // same positions: every candidate is one again
 }
@@ -97,34 +100,35 @@ TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
 {
     ParticleStore p = randomParticles(3000, 4); // three blocks: cross-block slots
     NeighborList list;
+    ContactHistoryStore history{true};
     list.skin = 0.5e-3;
-    list.rebuild(p);
-    list.refreshActiveSlots(p);
+    list.rebuild(p, history);
+    list.refreshActiveSlots(p, history);
     ASSERT_GT(list.deferred.size(), 0u);
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> oldIndex;
     for (std::size_t a = 0; a < list.activeSlots.size(); ++a)
     {
         const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
-        list.activeSpring[a] = keyValue(i, j);
-        list.activeMayBeActive[a] = static_cast<std::uint8_t>(a % 2); // half may be in contact
+        history.spring[a] = keyValue(i, j);
+        history.formed[a] = static_cast<std::uint8_t>(a % 2); // half may be in contact
         if (list.activeDeferred[a] != NeighborList::kInBlock)
             list.deferred[list.activeDeferred[a]].force = Vec3{1, 2, 3};
         oldIndex[{i, j}] = a;
     }
     const std::vector<std::uint32_t> oldDeferred = list.activeDeferred;
-    const std::vector<std::uint8_t> oldFlag = list.activeMayBeActive;
+    const std::vector<std::uint8_t> oldFlag = history.formed;
 
     // Let the sub-list age past 128 steps (its inner skin is then halved: candidates leave), jitter
     // by up to 0.1 mm (< skin/2, so the slots stay valid: candidates join), then a new sub-list.
     for (int s = 0; s < 128; ++s)
-        list.refreshActiveSlots(p);
+        list.refreshActiveSlots(p, history);
     ASSERT_EQ(list.activeRebuildCount(), 1u);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> jitter(-0.1e-3 / std::sqrt(3.0), 0.1e-3 / std::sqrt(3.0));
     for (Vec3& x : p.position)
         x += Vec3{jitter(rng), jitter(rng), jitter(rng)};
     ASSERT_FALSE(list.checkMotion(p.size(), 0.0, 1.0)); // the sub-list is stale, the slots are not
-    list.refreshActiveSlots(p);
+    list.refreshActiveSlots(p, history);
 
     std::size_t forward = 0, backward = 0, fresh = 0;
     std::set<std::size_t> continued;
@@ -135,16 +139,16 @@ TEST(NeighborList, HistoryFollowsItsSlotToANewSubList)
         if (found == oldIndex.end())
         {
             ++fresh;
-            EXPECT_EQ(list.activeSpring[a], Vec3{});
-            EXPECT_EQ(list.activeMayBeActive[a], 0);
+            EXPECT_EQ(history.spring[a], Vec3{});
+            EXPECT_EQ(history.formed[a], 0);
             continue;
         }
         const std::size_t b = found->second;
         continued.insert(b);
         forward += b > a ? 1 : 0; // the entry moved towards the front
         backward += b < a ? 1 : 0;
-        EXPECT_EQ(list.activeSpring[a], keyValue(i, j));
-        EXPECT_EQ(list.activeMayBeActive[a], oldFlag[b]);
+        EXPECT_EQ(history.spring[a], keyValue(i, j));
+        EXPECT_EQ(history.formed[a], oldFlag[b]);
     }
     EXPECT_GT(forward, 0u);
     EXPECT_GT(backward, 0u);
@@ -168,29 +172,31 @@ TEST(NeighborList, HistoryOfAPairThatLeftTheListIsForgotten)
     p.add({0, 0, 0}, {}, {}, 1e-3, 2500, 0);
     p.add({1.9e-3, 0, 0}, {}, {}, 1e-3, 2500, 0); // touching
     NeighborList list;
+    ContactHistoryStore history{true};
     list.skin = 0.5e-3;
-    list.rebuild(p);
-    list.refreshActiveSlots(p);
+    list.rebuild(p, history);
+    list.refreshActiveSlots(p, history);
     ASSERT_EQ(list.activeSlots.size(), 1u);
-    list.activeSpring[0] = {1e-6, 0, 0};
-    list.activeMayBeActive[0] = 1;
+    history.spring[0] = {1e-6, 0, 0};
+    history.formed[0] = 1;
     p.position[1] = {10e-3, 0, 0}; // far apart: no slot
-    list.rebuild(p);
+    list.rebuild(p, history);
     ASSERT_EQ(list.size(), 0u);
     p.position[1] = {1.9e-3, 0, 0}; // back in contact
-    list.rebuild(p);
-    list.refreshActiveSlots(p);
+    list.rebuild(p, history);
+    list.refreshActiveSlots(p, history);
     ASSERT_EQ(list.activeSlots.size(), 1u);
-    EXPECT_EQ(list.activeSpring[0], Vec3{});
-    EXPECT_EQ(list.activeMayBeActive[0], 0);
+    EXPECT_EQ(history.spring[0], Vec3{});
+    EXPECT_EQ(history.formed[0], 0);
 }
 
 TEST(NeighborList, RebuildNeededAfterHalfSkin)
 {
     ParticleStore p = randomParticles(10, 3);
     NeighborList list;
+    ContactHistoryStore history{true};
     list.skin = 1e-3;
-    list.rebuild(p);
+    list.rebuild(p, history);
     EXPECT_FALSE(list.needsRebuild(p));
     p.position[3].x += 0.6e-3;
     EXPECT_TRUE(list.needsRebuild(p));

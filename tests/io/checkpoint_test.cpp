@@ -101,10 +101,9 @@ TEST(Checkpoint, RestoredWorldStepsToTheSameBits)
     EXPECT_TRUE(sameBits(original.world.particles.position, restored.world.particles.position));
     EXPECT_TRUE(sameBits(original.world.particles.velocity, restored.world.particles.velocity));
     EXPECT_TRUE(sameBits(original.world.particles.angularVelocity, restored.world.particles.angularVelocity));
-    EXPECT_TRUE(sameBits(original.world.neighbors.activeSpring, restored.world.neighbors.activeSpring));
-    EXPECT_TRUE(sameBits(original.world.neighbors.activeRolling, restored.world.neighbors.activeRolling));
-    EXPECT_TRUE(
-        sameBits(original.world.wallContacts.tangentialSpring, restored.world.wallContacts.tangentialSpring));
+    EXPECT_TRUE(sameBits(original.world.pairHistory.spring, restored.world.pairHistory.spring));
+    EXPECT_TRUE(sameBits(original.world.pairHistory.rolling, restored.world.pairHistory.rolling));
+    EXPECT_TRUE(sameBits(original.world.wallHistory.spring, restored.world.wallHistory.spring));
     EXPECT_EQ(original.world.time, restored.world.time);
     std::filesystem::remove(path);
 }

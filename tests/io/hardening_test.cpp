@@ -42,8 +42,9 @@ TEST(Hardening, NeighbourGridSurvivesNonFiniteAndHugePositions)
     {
         const dem::ParticleStore p = twoSpheresAnd(third);
         dem::NeighborList list;
+        dem::ContactHistoryStore history;
         list.skin = 1e-3;
-        list.rebuild(p);
+        list.rebuild(p, history);
         bool found = false;
         for (std::size_t k = 0; k < list.size(); ++k)
             found |= list.first[k] == 0 && list.second[k] == 1;
@@ -53,7 +54,8 @@ TEST(Hardening, NeighbourGridSurvivesNonFiniteAndHugePositions)
     p.add({nan, nan, nan}, {}, {}, 0.01, 2500, 0);
     p.add({nan, 0, 0}, {}, {}, 0.01, 2500, 0);
     dem::NeighborList list;
-    list.rebuild(p); // all positions NaN: one cell, returns
+    dem::ContactHistoryStore history;
+    list.rebuild(p, history); // all positions NaN: one cell, returns
 }
 
 TEST(Hardening, TomlGuardAcceptsValidToml)

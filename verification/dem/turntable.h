@@ -73,7 +73,8 @@ inline World turntableWorld(const TurntableSetup& s)
     dem::prepare(world);
     const Vec3 gravityInPlane = world.gravity - dot(world.gravity, f.k) * f.k;
     const Vec3 friction = (2.0 / 7.0) * m * (s.omega * cross(f.k, v0) - gravityInPlane);
-    world.wallContacts.tangentialSpringOf(0, 0) = -friction / (ball.tangentialStiffnessRatio * s.stiffness);
+    world.wallHistory.spring[world.wallContacts.slotOf(0, 0)] =
+        -friction / (ball.tangentialStiffnessRatio * s.stiffness);
     dem::prepare(world);
     return world;
 }

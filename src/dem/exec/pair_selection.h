@@ -28,7 +28,7 @@ struct PairBatch
 };
 
 /// The touching-candidate sub-list of a chunk as the selection pass reads it (array bases in one
-/// place: NeighborList::activeFirst/activeSecond and activeMayBeActive, the particles' positions
+/// place: NeighborList::activeFirst/activeSecond and ContactHistoryStore::formed, the particles' positions
 /// [m] and radii [m]).
 struct Candidates
 {
