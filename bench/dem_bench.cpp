@@ -1,7 +1,7 @@
 // veridem_bench: the reference many-sphere benchmark of issue 5 (docs/performance.md).
 //
 //   veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S] [--threads T]
-//                 [--profile] [--repeat R] [--no-sort] [--spin-ns NS]
+//                 [--profile] [--repeat R] [--no-sort] [--no-fusion] [--spin-ns NS]
 //   veridem_bench --core-probe
 //
 // bed / gas: spheres read from an .xyz file (x y z per line, metres), radius 1 mm, density 2500,
@@ -15,7 +15,8 @@
 // The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
 // stage and the kinetic energy at the end. Nothing is written during the timed loop. A 12 ms probe
-// before and after it (core_probe.h) shows whether the run had a whole CPU core. --spin-ns: how
+// before and after it (core_probe.h) shows whether the run had a whole CPU core. --no-fusion: the
+// general step stages only (World::fusedSteps off), to measure what the fused paths pay. --spin-ns: how
 // long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
 #include "core_probe.h"
 #include "dem/forces.h"
@@ -57,6 +58,7 @@ struct Options
     int repeat = 1;
     bool profile = false;
     bool sort = true;                     // renumber particles in Morton order of cells before the run
+    bool fusion = true;                   // --no-fusion: World::fusedSteps off (the general stages)
     bool probeOnly = false;               // --core-probe: print one core probe (core_probe.h) and exit
     long spinNs = exec::kSpinNanoseconds; // --spin-ns: the pool's spin before blocking [ns]
 };
@@ -66,7 +68,8 @@ struct Options
     std::fprintf(
         stderr,
         "usage: veridem_bench [--scene bed|gas|turntable] [--model linear|hertz] [--file XYZ] [--tile N]\n"
-        "                     [--steps S] [--threads T] [--repeat R] [--profile] [--no-sort] [--spin-ns NS]\n"
+        "                     [--steps S] [--threads T] [--repeat R] [--profile] [--no-sort] [--no-fusion]\n"
+        "                     [--spin-ns NS]\n"
         "       veridem_bench --core-probe   (how much of a CPU core this process gets; no run)\n");
     std::exit(2);
 }
@@ -114,6 +117,8 @@ Options parse(int argc, char** argv)
             o.repeat = static_cast<int>(count());
         else if (arg == "--no-sort")
             o.sort = false;
+        else if (arg == "--no-fusion")
+            o.fusion = false;
         else if (arg == "--profile")
             o.profile = true;
         else if (arg == "--core-probe")
@@ -290,6 +295,7 @@ int run(int argc, char** argv)
         const double setupSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
         world.profile.enabled = o.profile;
+        world.fusedSteps = o.fusion;
 
         const bench::CoreProbe probeBefore = bench::probeCore();
         const double cpuStart = cpuSeconds();
@@ -377,11 +383,14 @@ int run(int argc, char** argv)
         const double particleBytes =
             static_cast<double>(n * (3 * sizeof(store.position[0]) + 3 * sizeof(store.force[0]) +
                                      4 * sizeof(Real) + sizeof(std::uint32_t)));
-        std::printf(
-            "  arrays: particles %.0f B/particle, pair list %.0f B/particle, wall list %.0f B/particle\n",
-            particleBytes / static_cast<double>(n),
-            static_cast<double>(world.neighbors.memoryBytes()) / static_cast<double>(n),
-            static_cast<double>(world.wallContacts.memoryBytes()) / static_cast<double>(n));
+        std::printf("  arrays: particles %.0f B/particle, pair list and history %.0f B/particle, wall list "
+                    "and history "
+                    "%.0f B/particle\n",
+                    particleBytes / static_cast<double>(n),
+                    static_cast<double>(world.neighbors.memoryBytes() + world.pairHistory.memoryBytes()) /
+                        static_cast<double>(n),
+                    static_cast<double>(world.wallContacts.memoryBytes() + world.wallHistory.memoryBytes()) /
+                        static_cast<double>(n));
         std::printf("  contact kernel %s (VERIDEM_KERNEL=avx2|portable to choose)\n", exec::isaName());
         std::printf("  pair slots %zu (%.2f per particle), rebuilds %zu, max overlap/r %.3g\n",
                     world.neighbors.size(),

@@ -29,10 +29,6 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
 /// operations of computeWallForces. Returns their health.
 ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
                              Vec3& torque);
-/// wallContactsOf compiled for x86-64-v3 (AVX2; no fused multiply-add, so the same bits): for the
-/// one-particle step's AVX2 variant. Only on a CPU with AVX2 (exec::isAvx2()).
-ContactHealth wallContactsOfAvx2(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
-                                 Vec3& torque);
 
 /// Folds per-chunk wall health into world health in chunk order (sets touchingWalls).
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks);

@@ -342,11 +342,8 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     return health;
 }
 
-namespace
-{
-/// wallContactsOf's body, inlined into each instruction-set variant below.
-VERIDEM_HOT_INLINE ContactHealth wallContactsOfBody(World& world, Real dt, std::uint32_t i,
-                                                    const ParticleState& s, Vec3& force, Vec3& torque)
+ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
+                             Vec3& torque)
 {
     const WallContactList& list = world.wallContacts;
     ContactHealth health{0, 0, false, 0};
@@ -355,19 +352,6 @@ VERIDEM_HOT_INLINE ContactHealth wallContactsOfBody(World& world, Real dt, std::
     for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k)
         wallContactScalar(world, dt, k, i, s, force, torque, health);
     return health;
-}
-} // namespace
-
-ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
-                             Vec3& torque)
-{
-    return wallContactsOfBody(world, dt, i, s, force, torque);
-}
-
-VERIDEM_AVX2_TARGET ContactHealth wallContactsOfAvx2(World& world, Real dt, std::uint32_t i,
-                                                     const ParticleState& s, Vec3& force, Vec3& torque)
-{
-    return wallContactsOfBody(world, dt, i, s, force, torque);
 }
 
 } // namespace veridem::dem

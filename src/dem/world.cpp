@@ -16,7 +16,10 @@
 // increment vt dt is then exactly the relative displacement over [t, t+dt]. Output never happens
 // here; the driver records the world between steps.
 //
-// A world of one particle takes stepOneParticleBody: these stages, the ball's state kept in registers.
+// Two fused paths run these stages with the same operations and bits, each kept because it pays
+// (figures in docs/performance.md; World::fusedSteps = false turns both off to measure them): a
+// world of one particle takes stepOneParticle, the ball's state kept in registers; advance() runs
+// each step's closing kick and the next step's kick-drift as one pass over the particles.
 #include "dem/world.h"
 
 #include "core/error.h"
@@ -252,11 +255,9 @@ bool integrationInLanes(const World& world)
 /// step() for a world of one particle (a single-ball verification run): the same stages in the
 /// same order with the same operations, so the same bits, but the particle's state stays in
 /// registers from the kick-drift to the kick instead of being stored by one stage and loaded by
-/// the next (~1.4x the steps per second; docs/performance.md). A single particle has no pair
-/// slots, so stage 3 only resets the pair health. `wallContacts`: wallContactsOf or its AVX2
-/// variant (inlined into stepOneParticlePortable and stepOneParticleAvx2, one caller each).
-template <class WallContacts>
-VERIDEM_HOT_INLINE void stepOneParticleBody(World& world, Real dt, WallContacts wallContacts)
+/// the next (2.1x the steps per second of the general stages; docs/performance.md). A single
+/// particle has no pair slots, so the pair stage only resets the pair health.
+void stepOneParticle(World& world, Real dt)
 {
     ParticleStore& p = world.particles;
     ParticleState s = particleState(p, 0);
@@ -276,11 +277,11 @@ VERIDEM_HOT_INLINE void stepOneParticleBody(World& world, Real dt, WallContacts 
     moveWalls(world.walls, dt);
     if (contactListsNeedRebuild(world, moved)) [[unlikely]]
         rebuildContactLists(world);
-    world.health.maxOverlapRatio = 0; // stage 3 (computePairForces) without pair slots: it only
-    world.health.touchingPairs = 0;   // resets the pair health (one particle has no pairs)
+    world.health.maxOverlapRatio = 0; // the pair stage (computePairForces) without pair slots: it
+    world.health.touchingPairs = 0;   // only resets the pair health (one particle has no pairs)
 
     Vec3 force{}, torque{}; // the pair sums are zero (addCrossBlockForces)
-    const ContactHealth walls = wallContacts(world, dt, 0, s, force, torque);
+    const ContactHealth walls = wallContactsOf(world, dt, 0, s, force, torque);
     p.force[0] = force;
     p.torque[0] = torque;
     mergeWallHealth(world.health, &walls, 1);
@@ -290,19 +291,8 @@ VERIDEM_HOT_INLINE void stepOneParticleBody(World& world, Real dt, WallContacts 
     p.angularVelocity[0] = s.angularVelocity;
     if (!world.health.finite)
         recordFirstNonFinite(p, world.health);
-}
-
-void stepOneParticlePortable(World& world, Real dt)
-{
-    stepOneParticleBody(world, dt, wallContactsOf);
-}
-
-/// The one-particle step compiled for x86-64-v3: GCC's three-operand AVX encodings of the same
-/// scalar operations (no fused multiply-add: -ffp-contract=off), so the same bits in ~13 % fewer
-/// instructions (callgrind, one ball on a turntable; docs/performance.md).
-VERIDEM_AVX2_TARGET void stepOneParticleAvx2(World& world, Real dt)
-{
-    stepOneParticleBody(world, dt, wallContactsOfAvx2);
+    world.time += dt;
+    ++world.stepCount;
 }
 
 /// The stages of step() after the kick-drift (`moved`: the motion it measured): wall motion,
@@ -398,18 +388,8 @@ void step(World& world, Real dt)
     if (!world.prepared)
         prepare(world);
 
-    if (world.particles.size() == 1 && !world.profile.enabled && !world.observer)
-    {
-        // The stages below for one particle, its state in registers; in AVX2 encodings when the
-        // lane kernel is (the same bits either way; VERIDEM_KERNEL=portable selects the other).
-        if (exec::isAvx2())
-            stepOneParticleAvx2(world, dt);
-        else
-            stepOneParticlePortable(world, dt);
-        world.time += dt;
-        ++world.stepCount;
-        return;
-    }
+    if (world.particles.size() == 1 && world.fusedSteps && !world.profile.enabled && !world.observer)
+        return stepOneParticle(world, dt); // the stages below, the ball's state in registers
 
     StageClock clock(world.profile);
     const bool lanes = integrationInLanes(world);
@@ -427,8 +407,9 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
         prepare(world);
     const auto failed = [&]
     { return !world.health.finite || world.health.maxOverlapRatio > maxOverlapRatio; };
-    if (world.particles.size() <= 1 || world.observer) // (one ball has its own step, with nothing to
-                                                       // fuse; an observer sees every step's end)
+    if (world.particles.size() <= 1 || world.observer ||
+        !world.fusedSteps) // (one ball has its own step,
+                           // with nothing to fuse; an observer sees every step's end)
     {
         for (std::uint64_t s = 0; s < steps; ++s)
         {

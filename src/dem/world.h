@@ -152,6 +152,10 @@ struct World
     PassSchedule passSchedule;
     bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
                                       // the scalar path, which false selects; pair_kernel.h)
+    // The fused step paths (world.cpp): one particle's step with its state in registers, and
+    // advance()'s closing kick fused with the next step's kick-drift. Same bits either way; false
+    // runs the general stages, to measure what the fusion pays (veridem_bench --no-fusion).
+    bool fusedSteps = true;
     bool prepared = false;
     StepObserver* observer = nullptr; // not owned; null: none
 
