@@ -210,7 +210,11 @@ ContactHistory NeighborList::slotHistory(std::size_t k) const
             hi = mid;
     }
     if (lo < activeFirst.size() && pairKey(activeFirst[lo], activeSecond[lo]) == wanted)
-        return candidateHistory(lo);
+    {
+        ContactHistory h = candidateHistory(lo);
+        h.formed = activeMayBeActive[lo];
+        return h;
+    }
     return ContactHistory{};
 }
 

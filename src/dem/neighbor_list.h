@@ -117,8 +117,9 @@ class NeighborList
     /// Rebuilds the pair slots; the history reaches the next sub-list by (i, j).
     void rebuild(const ParticleStore& particles);
 
-    /// History of slot k as the contact law takes it: its candidate's, or zero if it is not a
-    /// candidate (then it is open). A look-up by (i, j), for tests and output, not the force loop.
+    /// History of slot k as the contact law takes it: its candidate's (with its formed flag), or
+    /// zero if it is not a candidate (then it is open). A look-up by (i, j), for tests and output, not the
+    /// force loop.
     ContactHistory slotHistory(std::size_t k) const;
 
     /// History of candidate a as the contact law takes it.

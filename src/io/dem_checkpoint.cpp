@@ -178,7 +178,8 @@ std::vector<Real> ledgerValues(const dem::EnergyLedgerState& s)
             s.tangentialDampingPower,
             s.rollingPower,
             s.tangentialSpringEnergy,
-            s.rollingSpringEnergy};
+            s.rollingSpringEnergy,
+            s.adhesion};
 }
 void setLedgerValues(dem::EnergyLedgerState& s, const std::vector<Real>& v)
 {
@@ -197,6 +198,7 @@ void setLedgerValues(dem::EnergyLedgerState& s, const std::vector<Real>& v)
     s.rollingPower = v[12];
     s.tangentialSpringEnergy = v[13];
     s.rollingSpringEnergy = v[14];
+    s.adhesion = v[15];
 }
 
 } // namespace
