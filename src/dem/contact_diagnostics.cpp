@@ -5,13 +5,14 @@
 #include "dem/pair_kernel.h"
 
 #include <cmath>
-#include <limits>
 
 namespace veridem::dem
 {
 
 Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius)
 {
+    if (p.normalModel == NormalModel::Jkr) // a formed contact: also at delta_c < delta <= 0
+        return jkrStoredEnergy(p.effectiveModulus, effectiveRadius, p.workOfAdhesion, overlap);
     if (overlap <= 0)
         return 0;
     switch (p.normalModel)
@@ -23,9 +24,10 @@ Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius
     case NormalModel::Dmt:
         return 0.4 * hertzElasticForce<Real>(p.effectiveModulus, effectiveRadius, overlap) * overlap -
                dmtPullOffForce<Real>(effectiveRadius, p.workOfAdhesion) * overlap;
-    default: // JKR: not implemented
-        return std::numeric_limits<Real>::quiet_NaN();
+    case NormalModel::Jkr: // above
+        break;
     }
+    return 0;
 }
 
 namespace
@@ -67,20 +69,23 @@ ContactRecord recordOf(const PairParams& params, const ContactInput& in, const C
 
 } // namespace
 
-std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
+std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* brokenEnergy)
 {
     std::vector<ContactRecord> records;
     const ParticleStore& p = world.particles;
     const NeighborList& list = world.neighbors;
-    // Pairs: the contact frame of the force stage (pairContactFrame, contact_frame.h).
+    // Pairs: the contact frame of the force stage (pairContactFrame, contact_frame.h), within the
+    // touch criterion's reach as the force stage passes them to the law; recorded while formed
+    // (JKR: the law's formed flag; every other model: delta > 0).
     for (std::size_t k = 0; k < list.size(); ++k)
     {
         const std::uint32_t i = list.first[k], j = list.second[k];
         const Real ri = p.radius[i], rj = p.radius[j];
-        const Real touching = ri + rj;
+        const PairParams& params = world.pairs(p.material[i], p.material[j]);
+        const bool jkr = params.normalModel == NormalModel::Jkr;
+        const Real touching = ri + rj + (jkr ? list.reach : 0);
         if (lengthSquared(p.position[i] - p.position[j]) >= touching * touching)
             continue;
-        const PairParams& params = world.pairs(p.material[i], p.material[j]);
         const ContactFrameOf<Real> f =
             pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
                                    p.angularVelocity[i], p.angularVelocity[j]);
@@ -89,9 +94,16 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
         const std::size_t a = list.candidateOfSlot(k);
         ContactHistory history = // a copy: the world keeps its own
             a == NeighborList::kNotCandidate ? ContactHistory{} : world.pairHistory.at(a);
-        history.formed = 1;
+        const bool wasFormed = history.formed != 0;
         LawTerms terms;
         const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
+        if (jkr && history.formed == 0)
+        {
+            if (wasFormed && brokenEnergy) // it breaks in this step
+                *brokenEnergy +=
+                    jkrBreakingEnergy(params.effectiveModulus, in.effectiveRadius, params.workOfAdhesion);
+            continue;
+        }
         ContactRecord r = recordOf(params, in, out, terms, history);
         r.i = i;
         r.partner = j;
@@ -100,6 +112,19 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt)
         r.point = p.position[i] - leverI * in.normal;
         records.push_back(r);
     }
+    // Formed JKR candidates beyond the reach: the force stage opens them without the law.
+    if (brokenEnergy && list.reach > 0)
+        for (std::size_t a = 0; a < list.activeFirst.size(); ++a)
+        {
+            const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
+            const PairParams& params = world.pairs(p.material[i], p.material[j]);
+            const Real touching = p.radius[i] + p.radius[j] + list.reach;
+            if (world.pairHistory.formed[a] && params.normalModel == NormalModel::Jkr &&
+                lengthSquared(p.position[i] - p.position[j]) >= touching * touching)
+                *brokenEnergy += jkrBreakingEnergy(params.effectiveModulus,
+                                                   p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]),
+                                                   params.workOfAdhesion);
+        }
     // Walls: the contact frame of the force stage (wallContactFrame, contact_frame.h).
     const WallContactList& walls = world.wallContacts;
     if (walls.start.size() != p.size() + 1)

@@ -48,14 +48,16 @@ struct ContactRecord
 /// Every touching pair (in slot order) and wall contact (in slot order) of the world's current
 /// lists, evaluated with step dt [s] as the force stage would (dt = 0: the law at the current
 /// state with no increment, as for a run's initial forces). The contact lists must be current
-/// (step()'s observer point, or between steps). A JKR contact's elastic energy is NaN (not
-/// implemented).
-std::vector<ContactRecord> evaluateContacts(const World& world, Real dt);
+/// (step()'s observer point, or between steps). A JKR pair is a contact while the law keeps it
+/// formed (also at delta_c < delta <= 0). If `brokenEnergy` is given, the energy that the formed
+/// JKR contacts breaking in this step lose, jkrBreakingEnergy each (models/cohesion.h), is added
+/// to it [J].
+std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* brokenEnergy = nullptr);
 
-/// The energy stored in the normal spring of a pair at overlap delta [m] [J]: the integral of
-/// the law's elastic normal force from 0 to delta (linear kn delta^2 / 2; Hertz
-/// (8/15) E* sqrt(R*) delta^(5/2); DMT that minus 2 pi w R* delta; JKR: NaN, not implemented).
-/// R* [m].
+/// The energy stored in the normal spring of a formed pair at overlap delta [m] [J]: the integral
+/// of the law's elastic normal force from 0 to delta (linear kn delta^2 / 2; Hertz
+/// (8/15) E* sqrt(R*) delta^(5/2); DMT that minus 2 pi w R* delta; JKR jkrStoredEnergy,
+/// models/cohesion.h, also for delta_c < delta <= 0). R* [m].
 Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius);
 
 } // namespace veridem::dem

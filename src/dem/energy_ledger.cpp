@@ -1,7 +1,5 @@
 #include "dem/energy_ledger.h"
 
-#include "core/error.h"
-
 namespace veridem::dem
 {
 
@@ -42,11 +40,6 @@ void EnergyLedger::start(const World& world)
 {
     if (state.started)
         return;
-    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
-        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
-            if (world.pairs(a, b).normalModel == NormalModel::Jkr)
-                throw InputError("the energy ledger ([output] energy = true) does not support the \"jkr\" "
-                                 "model (its elastic energy is not implemented)");
     const std::vector<ContactRecord> records = evaluateContacts(world, 0.0);
     state = {};
     Real elastic = 0;
@@ -74,7 +67,7 @@ void EnergyLedger::beforeForces(const World& world, Real dt)
     for (std::size_t i = 0; i < p.size(); ++i)
         gravityPower += p.mass[i] * dot(world.gravity, p.velocity[i]);
     state.gravityWork += dt * gravityPower;
-    records_ = evaluateContacts(world, dt);
+    records_ = evaluateContacts(world, dt, &state.adhesion);
     // The springs' energy lost before the law's increment: of contacts that opened (their
     // history is dropped) and by the stiffness's change with the overlap.
     Real tangentialBefore = 0, rollingBefore = 0;
@@ -115,7 +108,7 @@ void EnergyLedger::afterStep(const World& world, Real dt)
 
 Real EnergyLedger::dissipated() const
 {
-    return state.normalDamping + state.tangentialDamping + state.friction + state.rolling;
+    return state.normalDamping + state.tangentialDamping + state.friction + state.rolling + state.adhesion;
 }
 
 Real EnergyLedger::residual(const World& world) const

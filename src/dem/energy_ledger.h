@@ -3,6 +3,7 @@
 // rolling resistance, accumulated step by step from the contact law's own force terms
 // (contact_diagnostics.h), so that
 //     E_kin + E_elastic - W_gravity - W_walls + D_normal + D_tangential + D_friction + D_rolling
+//       + D_adhesion
 // equals E_initial up to the integrator's O(dt^2) error. It observes every step (StepObserver):
 // a scalar pass over the contacts per step, on request only.
 #pragma once
@@ -27,6 +28,7 @@ struct EnergyLedgerState
     Real tangentialDamping = 0; // dissipated by the tangential dashpots [J]
     Real friction = 0;          // dissipated by tangential slip [J]
     Real rolling = 0;           // dissipated by rolling resistance [J]
+    Real adhesion = 0;          // lost by JKR contacts breaking at delta_c (the hysteresis) [J]
     // The tangential and EPSD rolling springs' energies after the last step [J]: what the next
     // step starts from, so that the energy a spring loses outside the law's increment (its
     // contact opened, or its stiffness changed with the overlap: Hertz-Mindlin) is booked as
@@ -47,8 +49,7 @@ class EnergyLedger final : public StepObserver
 {
   public:
     /// Sets the initial energy and powers from the world's current state (its contact lists
-    /// current: after prepare()), unless the state was restored (started). Throws InputError if
-    /// some pair uses the JKR model.
+    /// current: after prepare()), unless the state was restored (started).
     void start(const World& world);
     void beforeForces(const World& world, Real dt) override;
     void afterStep(const World& world, Real dt) override;
@@ -57,7 +58,7 @@ class EnergyLedger final : public StepObserver
 
     /// E_kin + E_elastic - W_gravity - W_walls + D (all) - E_initial [J], with E_kin of `world`.
     Real residual(const World& world) const;
-    /// D_normal + D_tangential + D_friction + D_rolling [J].
+    /// D_normal + D_tangential + D_friction + D_rolling + D_adhesion [J].
     Real dissipated() const;
 
   private:

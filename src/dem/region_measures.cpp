@@ -1,6 +1,6 @@
 #include "dem/region_measures.h"
 
-#include "core/constants.h"
+#include "dem/sphere_box_volume.h"
 
 namespace veridem::dem
 {
@@ -29,13 +29,30 @@ RegionMeasures measureRegion(const World& world, const std::vector<ContactRecord
     RegionMeasures m;
     const Vec3 size = hi - lo;
     const Real volume = size.x * size.y * size.z;
-    Real solid = 0;
+    Real solid = 0, mass = 0;
+    Vec3 momentum;
     for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        solid += sphereBoxVolume(p.position[i], p.radius[i], lo, hi);
         if (inside(p.position[i], lo, hi))
         {
             ++m.particles;
-            solid += (4.0 / 3.0) * kPi * p.radius[i] * p.radius[i] * p.radius[i];
+            mass += p.mass[i];
+            momentum += p.mass[i] * p.velocity[i];
         }
+    }
+    // Kinetic part: -sum m v' v'^T over the box's particles, v' = v - the mass-averaged velocity.
+    std::array<Real, 9> kinetic{};
+    if (mass > 0)
+    {
+        const Vec3 mean = momentum / mass;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (inside(p.position[i], lo, hi))
+            {
+                const Vec3 fluctuation = p.velocity[i] - mean;
+                addDyad(kinetic, -p.mass[i] * fluctuation, fluctuation);
+            }
+    }
     std::array<Real, 9> t{};
     for (const ContactRecord& c : contacts)
     {
@@ -54,12 +71,19 @@ RegionMeasures measureRegion(const World& world, const std::vector<ContactRecord
     }
     m.coordination = m.particles ? Real(m.contacts) / Real(m.particles) : 0;
     m.packingFraction = solid / volume;
-    m.stress = {t[0] / volume,
-                t[4] / volume,
-                t[8] / volume,
-                0.5 * (t[1] + t[3]) / volume,
-                0.5 * (t[2] + t[6]) / volume,
-                0.5 * (t[5] + t[7]) / volume};
+    const auto symmetric = [&](const std::array<Real, 9>& a) -> std::array<Real, 6>
+    {
+        return {a[0] / volume,
+                a[4] / volume,
+                a[8] / volume,
+                0.5 * (a[1] + a[3]) / volume,
+                0.5 * (a[2] + a[6]) / volume,
+                0.5 * (a[5] + a[7]) / volume};
+    };
+    m.contactStress = symmetric(t);
+    m.kineticStress = symmetric(kinetic);
+    for (std::size_t k = 0; k < 6; ++k)
+        m.stress[k] = m.contactStress[k] + m.kineticStress[k];
     return m;
 }
 

@@ -180,7 +180,8 @@ std::vector<Real> ledgerValues(const dem::EnergyLedgerState& s)
             s.tangentialDampingPower,
             s.rollingPower,
             s.tangentialSpringEnergy,
-            s.rollingSpringEnergy};
+            s.rollingSpringEnergy,
+            s.adhesion};
 }
 void setLedgerValues(dem::EnergyLedgerState& s, const std::vector<Real>& v)
 {
@@ -199,6 +200,7 @@ void setLedgerValues(dem::EnergyLedgerState& s, const std::vector<Real>& v)
     s.rollingPower = v[12];
     s.tangentialSpringEnergy = v[13];
     s.rollingSpringEnergy = v[14];
+    s.adhesion = v[15];
 }
 
 } // namespace

@@ -7,7 +7,8 @@ RegionRecorder::RegionRecorder(const std::filesystem::path& directory, const Vec
                                std::optional<std::uint64_t> resumeBytes)
     : lo_(lo), hi_(hi), table_(directory,
                                {"t", "particles", "contacts", "coordination", "packing_fraction", "sxx",
-                                "syy", "szz", "sxy", "sxz", "syz"},
+                                "syy", "szz", "sxy", "sxz", "syz", "kinetic_sxx", "kinetic_syy",
+                                "kinetic_szz", "kinetic_sxy", "kinetic_sxz", "kinetic_syz"},
                                resumeBytes, "region.csv")
 {
 }
@@ -15,8 +16,11 @@ RegionRecorder::RegionRecorder(const std::filesystem::path& directory, const Vec
 void RegionRecorder::record(const dem::World& world, const std::vector<dem::ContactRecord>& contacts)
 {
     const dem::RegionMeasures m = dem::measureRegion(world, contacts, lo_, hi_);
-    table_.row({world.time, m.particles, m.contacts, m.coordination, m.packingFraction, m.stress[0],
-                m.stress[1], m.stress[2], m.stress[3], m.stress[4], m.stress[5]});
+    std::vector<ThermoValue> row = {world.time, m.particles, m.contacts, m.coordination, m.packingFraction};
+    for (const std::array<Real, 6>* stress : {&m.stress, &m.kineticStress})
+        for (const Real v : *stress)
+            row.emplace_back(v);
+    table_.row(row);
 }
 
 } // namespace veridem::io

@@ -1,8 +1,9 @@
 // DIR/region.csv of a DEM run with `[output] region_min/region_max` (dem/region_measures.h): one
 // row per output with t [s], the particles whose centres are in the box, their particle-particle
 // contacts (counted per member particle), the coordination number [-], the packing fraction [-]
-// and the Love-Weber static stress sxx, syy, szz, sxy, sxz, syz [Pa] (tension positive). Every
-// write is checked (OutputError).
+// and the Love-Weber stress sxx, syy, szz, sxy, sxz, syz [Pa] (contact plus kinetic part, tension
+// positive), then its kinetic part kinetic_sxx ... kinetic_syz [Pa]. Every write is checked
+// (OutputError).
 #pragma once
 
 #include "dem/region_measures.h"

@@ -15,9 +15,9 @@ std::vector<std::string> columns(bool ledger)
                                   "kinetic_rotational",
                                   "elastic"};
     if (ledger)
-        for (const char* name :
-             {"work_gravity", "work_walls", "dissipated_normal_damping", "dissipated_tangential_damping",
-              "dissipated_friction", "dissipated_rolling", "energy_initial", "energy_residual"})
+        for (const char* name : {"work_gravity", "work_walls", "dissipated_normal_damping",
+                                 "dissipated_tangential_damping", "dissipated_friction", "dissipated_rolling",
+                                 "dissipated_adhesion", "energy_initial", "energy_residual"})
             c.push_back(name);
     return c;
 }
@@ -49,7 +49,7 @@ void ThermoRecorder::record(const dem::World& world, const std::vector<dem::Cont
     {
         const dem::EnergyLedgerState& s = ledger_->state;
         for (const Real v : {s.gravityWork, s.wallWork, s.normalDamping, s.tangentialDamping, s.friction,
-                             s.rolling, s.initialEnergy, ledger_->residual(world)})
+                             s.rolling, s.adhesion, s.initialEnergy, ledger_->residual(world)})
             row.emplace_back(v);
     }
     table_.row(row);

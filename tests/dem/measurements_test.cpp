@@ -1,6 +1,7 @@
 // The measurements (docs/measurements.md) against hand-computable configurations: a simple cubic
-// lattice of spheres under a known overlap (coordination 6, packing fraction 4 pi r^3 / (3 a^3),
-// Love-Weber stress -kn delta / a^2, elastic energy kn delta^2 / 2 per contact); the diagnostic
+// lattice of spheres under a known overlap (coordination 6, packing fraction 4 pi r^3 / (3 a^3) in
+// any box of whole cells, Love-Weber stress -kn delta / a^2, elastic energy kn delta^2 / 2 per
+// contact); the kinetic stress of two free particles; the diagnostic
 // pass and the ledger's observer leave the run's bits unchanged; the ledger of a head-on
 // collision balances.
 #include "dem/contact_diagnostics.h"
@@ -43,14 +44,14 @@ TEST(Measurements, CubicLatticeRegion)
     const World world = cubicLattice();
     const std::vector<ContactRecord> contacts = evaluateContacts(world, 0.0);
     ASSERT_EQ(contacts.size(), 3u * 5 * 5 * 4); // 4 bonds per line, 25 lines, 3 directions
-    // The box through the contact points around the central 3 x 3 x 3 spheres: every sphere
-    // inside it lies wholly inside it.
+    // The box through the contact points around the central 3 x 3 x 3 spheres: three lattice
+    // cells a side, so the spheres' parts inside it add up to 27 spheres (periodicity).
     const Vec3 lo{0.5 * kA, 0.5 * kA, 0.5 * kA}, hi{3.5 * kA, 3.5 * kA, 3.5 * kA};
     const RegionMeasures m = measureRegion(world, contacts, lo, hi);
     EXPECT_EQ(m.particles, 27u);
     EXPECT_EQ(m.contacts, 27u * 6);
     EXPECT_EQ(m.coordination, 6.0);
-    // Sums of 27 equal terms: rounding 1e-14 relative at most.
+    // The exact volume of each sphere in the box: 1e-13 of a sphere each (sphere_box_volume.h).
     const Real phi = 4.0 / 3.0 * kPi * kR * kR * kR / (kA * kA * kA);
     EXPECT_NEAR(m.packingFraction, phi, 1e-13 * phi);
     EXPECT_NEAR(m.packingFraction, kPi / 6, 2e-2); // touching spheres: pi/6 (delta/r = 1 %)
@@ -67,6 +68,51 @@ TEST(Measurements, CubicLatticeRegion)
     }
     const Real expected = static_cast<Real>(contacts.size()) * 0.5 * kKn * kDelta * kDelta;
     EXPECT_NEAR(elastic, expected, 1e-8 * expected); // delta = 2r - |dx| loses ~1e-11 of delta
+}
+
+TEST(Measurements, PackingFractionOfAnyBoxOfWholeCells)
+{
+    // A box of 3 x 3 x 3 cells at any offset holds 27 spheres' worth of volume (the lattice is
+    // periodic): phi = 4 pi r^3 / (3 a^3), which is pi/6 (1 + delta/a)^3 with spheres that
+    // overlap by delta. The centre rule would count 27 +- 9 whole spheres here.
+    const World world = cubicLattice();
+    const std::vector<ContactRecord> contacts = evaluateContacts(world, 0.0);
+    const Real phi = 4.0 / 3.0 * kPi * kR * kR * kR / (kA * kA * kA);
+    for (const Vec3 offset : {Vec3{0.62, 0.81, 0.55}, Vec3{0.5, 0.999, 0.73}, Vec3{0.9, 0.6, 0.95}})
+    {
+        const Vec3 lo = kA * offset;
+        const RegionMeasures m = measureRegion(world, contacts, lo, lo + Vec3{3 * kA, 3 * kA, 3 * kA});
+        EXPECT_NEAR(m.packingFraction, phi, 1e-13 * phi) << offset.x;
+        EXPECT_NEAR(m.packingFraction, kPi / 6 * std::pow(1 + kDelta / kA, 3), 1e-13 * phi);
+    }
+}
+
+TEST(Measurements, KineticStressOfFreeParticles)
+{
+    // Two equal particles in the box with v1 = (1, 2, 0) and v2 = (3, 0, 0) m/s: mean (2, 1, 0),
+    // fluctuations +-(-1, 1, 0); sum m v' v'^T = 2m [[1, -1, 0], [-1, 1, 0], [0, 0, 0]], so
+    // sigma_k = -(2m / V) on xx and yy, +(2m / V) on xy, zero elsewhere. A third particle outside
+    // the box, moving fast, does not count. No contacts: the stress is the kinetic part alone.
+    World world;
+    Material m;
+    m.name = "steel";
+    m.normalStiffness = kKn;
+    world.addMaterial(m);
+    world.particles.add({0.2, 0.2, 0.2}, {1, 2, 0}, {}, kR, 7800, 0);
+    world.particles.add({0.6, 0.6, 0.6}, {3, 0, 0}, {}, kR, 7800, 0);
+    world.particles.add({2.0, 0.5, 0.5}, {40, -7, 9}, {}, kR, 7800, 0);
+    const Real volume = 1.0;
+    const RegionMeasures r = measureRegion(world, {}, {0, 0, 0}, {1, 1, 1});
+    const Real s = 2 * world.particles.mass[0] / volume;
+    const std::array<Real, 6> expected = {-s, -s, 0, s, 0, 0};
+    for (std::size_t k = 0; k < 6; ++k)
+    {
+        // Sums of a few products of exact small numbers: rounding ~1e-16 of s.
+        EXPECT_NEAR(r.kineticStress[k], expected[k], 1e-15 * s) << k;
+        EXPECT_EQ(r.contactStress[k], 0.0);
+        EXPECT_EQ(r.stress[k], r.kineticStress[k]);
+    }
+    EXPECT_EQ(r.particles, 2u);
 }
 
 TEST(Measurements, EmptyRegion)

@@ -32,13 +32,14 @@ if result.returncode != 0:
 thermo = list(csv.DictReader(open(straight / "thermo.csv")))
 last = thermo[-1]
 dissipated = sum(float(last[k]) for k in ("dissipated_normal_damping", "dissipated_tangential_damping",
-                                           "dissipated_friction", "dissipated_rolling"))
+                                           "dissipated_friction", "dissipated_rolling", "dissipated_adhesion"))
 if not dissipated > 0 or abs(float(last["energy_residual"])) > 1e-2 * dissipated:
     raise SystemExit(f"FAIL: ledger residual {last['energy_residual']} J, dissipated {dissipated} J")
 region = list(csv.DictReader(open(straight / "region.csv")))
-if len(region) != len(thermo) or list(region[0].keys()) != ["t", "particles", "contacts", "coordination",
-                                                            "packing_fraction", "sxx", "syy", "szz", "sxy",
-                                                            "sxz", "syz"]:
+stress = ["sxx", "syy", "szz", "sxy", "sxz", "syz"]
+if len(region) != len(thermo) or list(region[0].keys()) != (
+        ["t", "particles", "contacts", "coordination", "packing_fraction"] + stress +
+        ["kinetic_" + s for s in stress]):
     raise SystemExit("FAIL: region.csv columns or rows")
 
 frames = [(float(d.get("timestep")), straight / d.get("file"))

@@ -17,6 +17,9 @@
 // a(delta) is the larger root of x^4 - R* sqrt(2 pi w / E*) x - R* delta = 0, x = sqrt(a) (the
 // stable branch). Newton's method from an upper bound descends onto it monotonically (the quartic
 // is convex and increasing above its larger root).
+// The energy of a formed contact, U(delta) = integral of F from delta = 0 (the contact formed at
+// touch) to delta, is closed-form in a (jkrPathEnergy, jkrStoredEnergy); a contact that breaks at
+// delta_c loses U(delta_c) (jkrBreakingEnergy), the hysteresis (docs/measurements.md).
 //
 // DMT (Derjaguin, Muller & Toporov 1975, in the form Maugis 2000 gives its limit): Hertz's
 // deformation with a constant adhesive force, F = (4/3) E* sqrt(R*) delta^(3/2) - 2 pi w R* while
@@ -30,6 +33,8 @@
 #include "core/hot.h"
 #include "dem/lanes.h"
 #include "dem/models/normal.h"
+
+#include <cmath>
 
 namespace veridem::dem
 {
@@ -87,6 +92,42 @@ inline Real jkrOverlap(Real modulus, Real effectiveRadius, Real adhesion, Real c
 {
     return contactRadius * contactRadius / effectiveRadius -
            std::sqrt(2.0 * kPi * adhesion * contactRadius / modulus);
+}
+
+/// JKR path energy G(a) = E* [8 a^5 / (15 R*^2) - (4 c / (3 R*)) a^(7/2) + c^2 a^2 / 2] [J],
+/// c = sqrt(2 pi w / E*), at contact radius a [m]: the integral of F(a) d delta/da from a = 0
+/// (delta = 0, F = 0), so dG/d delta = F along delta(a). It is the JKR total energy (elastic
+/// minus surface energy pi a^2 w); G(a0) = -(3/10) E* c^2 a0^2 at the touching radius
+/// a0 = (2 pi w R*^2 / E*)^(1/3), G(a_c) = (1/5) E* c^2 a_c^2 at the breaking radius.
+inline Real jkrPathEnergy(Real modulus, Real effectiveRadius, Real adhesion, Real contactRadius)
+{
+    const Real a = contactRadius, c = std::sqrt(2.0 * kPi * adhesion / modulus);
+    const Real a2 = a * a, root = std::sqrt(a); // a^(7/2) = a^3 sqrt(a)
+    return modulus * ((8.0 / 15.0) * a2 * a2 * a / (effectiveRadius * effectiveRadius) -
+                      (4.0 / 3.0) * c * a2 * a * root / effectiveRadius + 0.5 * c * c * a2);
+}
+
+/// The energy stored in a formed JKR contact at overlap delta >= delta_c [m] [J]: the integral of
+/// the law's force from delta = 0 (where the contact forms, a = a0) to delta,
+/// U(delta) = G(a(delta)) - G(a0), so U = 0 for a contact formed at touch; negative while the
+/// force attracts near delta = 0, and U(delta_c) > 0 (jkrBreakingEnergy) at the breaking point.
+/// Below delta_c it returns U(delta_c). With w = 0 it is Hertz's (8/15) E* sqrt(R*) delta^(5/2).
+inline Real jkrStoredEnergy(Real modulus, Real effectiveRadius, Real adhesion, Real overlap)
+{
+    const Real a = jkrContactRadius<Real>(modulus, effectiveRadius, adhesion, overlap);
+    const Real touching = std::cbrt(2.0 * kPi * adhesion * effectiveRadius * effectiveRadius / modulus);
+    return jkrPathEnergy(modulus, effectiveRadius, adhesion, a) -
+           jkrPathEnergy(modulus, effectiveRadius, adhesion, touching);
+}
+
+/// The energy a formed JKR contact loses when it breaks at delta_c [J]: U(delta_c) =
+/// G(a_c) - G(a0) = 2 pi w (a0^2 (3/10) + a_c^2 / 5), a_c = a0 / 16^(1/3) (the hysteresis of a
+/// contact formed at touch and pulled apart under displacement control).
+inline Real jkrBreakingEnergy(Real modulus, Real effectiveRadius, Real adhesion)
+{
+    const Real a0 = std::cbrt(2.0 * kPi * adhesion * effectiveRadius * effectiveRadius / modulus);
+    const Real ac = a0 / std::cbrt(16.0);
+    return 2.0 * kPi * adhesion * (0.3 * a0 * a0 + 0.2 * ac * ac);
 }
 
 /// DMT force (4/3) E* sqrt(R*) delta^(3/2) - 2 pi w R* [N] at overlap delta > 0 [m].
