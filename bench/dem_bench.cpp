@@ -16,7 +16,7 @@
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
 // stage and the kinetic energy at the end. Nothing is written during the timed loop. A 12 ms probe
 // before and after it (core_probe.h) shows whether the run had a whole CPU core. --no-fusion: the
-// general step stages only (World::fusedSteps off), to measure what the fused paths pay. --spin-ns: how
+// general step stages only (Execution::fusedSteps off), to measure what the fused paths pay. --spin-ns: how
 // long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
 #include "core_probe.h"
 #include "dem/forces.h"
@@ -58,7 +58,7 @@ struct Options
     int repeat = 1;
     bool profile = false;
     bool sort = true;                     // renumber particles in Morton order of cells before the run
-    bool fusion = true;                   // --no-fusion: World::fusedSteps off (the general stages)
+    bool fusion = true;                   // --no-fusion: Execution::fusedSteps off (the general stages)
     bool probeOnly = false;               // --core-probe: print one core probe (core_probe.h) and exit
     long spinNs = exec::kSpinNanoseconds; // --spin-ns: the pool's spin before blocking [ns]
 };
@@ -294,8 +294,8 @@ int run(int argc, char** argv)
         prepare(world);
         const double setupSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
-        world.profile.enabled = o.profile;
-        world.fusedSteps = o.fusion;
+        world.exec.profile.enabled = o.profile;
+        world.exec.fusedSteps = o.fusion;
 
         const bench::CoreProbe probeBefore = bench::probeCore();
         const double cpuStart = cpuSeconds();
@@ -401,12 +401,12 @@ int run(int argc, char** argv)
                     100.0 * static_cast<double>(world.neighbors.deferred.size()) /
                         static_cast<double>(std::max<std::size_t>(world.neighbors.size(), 1)),
                     NeighborList::kBlockParticles);
-        if (world.pairSchedule.chunks > 1)
+        if (world.exec.pairSchedule.chunks > 1)
             std::printf(
                 "  pair stage on %d threads: the busiest has %.1f %% of the weighted candidates; the split "
                 "moved %llu times after the threads' measured speeds\n",
-                world.pairSchedule.chunks, 100.0 * world.pairSchedule.heaviestShare,
-                static_cast<unsigned long long>(world.pairSchedule.moves));
+                world.exec.pairSchedule.chunks, 100.0 * world.exec.pairSchedule.heaviestShare,
+                static_cast<unsigned long long>(world.exec.pairSchedule.moves));
         std::printf("  touching candidates %zu (%.2f per particle, inner skin %.3g m), rebuilt %zu times\n",
                     world.neighbors.activeSlots.size(),
                     static_cast<double>(world.neighbors.activeSlots.size()) / static_cast<double>(n),
@@ -419,7 +419,7 @@ int run(int argc, char** argv)
         std::printf("  kinetic energy after %ld steps %.9e J\n", o.steps, kineticEnergy(world));
         if (o.profile)
         {
-            const StepProfile& p = world.profile;
+            const StepProfile& p = world.exec.profile;
             const double total = p.integration + p.neighbours + p.pairForces + p.particlePass;
             auto share = [&](const char* name, double t)
             {

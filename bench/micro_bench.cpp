@@ -85,7 +85,7 @@ BENCHMARK(contactLaw);
 void pairForces(benchmark::State& state, bool batched)
 {
     World world = latticeWorld(static_cast<int>(state.range(0)));
-    world.batchedContactKernel = batched;
+    world.exec.batchedContactKernel = batched;
     for (auto _ : state)
         computePairForces(world, 1e-5);
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles.size()));

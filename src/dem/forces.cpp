@@ -65,7 +65,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     NeighborList& list = world.neighbors;
     const std::size_t n = p.size();
     const std::size_t pairCount = list.size();
-    const bool allBatchable = world.batchedContactKernel;
+    const bool allBatchable = world.exec.batchedContactKernel;
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
 
@@ -92,7 +92,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     const SelectPass select = selectPassFor(exec::isa());
     // Health per block (one thread: per run, in entry 0), folded in block order (the order of a
     // serial loop).
-    ContactHealth* const health = world.pairSchedule.runHealth.data();
+    ContactHealth* const health = world.exec.pairSchedule.runHealth.data();
     // One run of consecutive blocks: their candidates, selected and evaluated in batches.
     const auto pairRun = [&](const BlockRun& run) -> ContactHealth
     {
@@ -180,7 +180,7 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
             static_cast<std::size_t>(chunks), chunks,
             [&](int chunk, std::size_t, std::size_t)
             {
-                const ThreadBusyTimer busy(world.profile, world.profile.pairBusy, chunk);
+                const ThreadBusyTimer busy(world.exec.profile, world.exec.profile.pairBusy, chunk);
                 const BlockRun* const run = runOf[chunk];
                 if (!run)
                     return;
@@ -190,8 +190,8 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
                 seconds[chunk] =
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             });
-        if (world.pairSchedule.adapt)
-            adaptSchedule(world.pairSchedule, seconds, chunks);
+        if (world.exec.pairSchedule.adapt)
+            adaptSchedule(world.exec.pairSchedule, seconds, chunks);
     }
     foldHealth(world.health, health, static_cast<int>(blocks), world.health.touchingPairs);
 }

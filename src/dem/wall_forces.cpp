@@ -326,7 +326,7 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     ContactHealth health{0, 0, false, 0};
     if (list.size() == 0 || list.start.size() != p.size() + 1)
         return health;
-    if (world.batchedContactKernel)
+    if (world.exec.batchedContactKernel)
     {
         PlaneFrame frames[kMaxPlaneFrames];
         if (!planeFrames(world.walls, dt, frames))

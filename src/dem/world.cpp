@@ -17,7 +17,7 @@
 // here; the driver records the world between steps.
 //
 // Two fused paths run these stages with the same operations and bits, each kept because it pays
-// (figures in docs/performance.md; World::fusedSteps = false turns both off to measure them): a
+// (figures in docs/performance.md; Execution::fusedSteps = false turns both off to measure them): a
 // world of one particle takes stepOneParticle, the ball's state kept in registers; advance() runs
 // each step's closing kick and the next step's kick-drift as one pass over the particles.
 #include "dem/world.h"
@@ -220,19 +220,19 @@ Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
         // Each thread finishes a contiguous part of the particles, in proportion to its measured
         // rate (PassSchedule; any split gives the same bits).
         std::size_t edge[65];
-        passEdges(world.passSchedule, n, chunks, edge);
+        passEdges(world.exec.passSchedule, n, chunks, edge);
         double seconds[64] = {};
         parallelChunks(
             static_cast<std::size_t>(chunks), chunks,
             [&](int c, std::size_t, std::size_t)
             {
-                const ThreadBusyTimer busy(world.profile, world.profile.particlePassBusy, c);
+                const ThreadBusyTimer busy(world.exec.profile, world.exec.profile.particlePassBusy, c);
                 const auto start = std::chrono::steady_clock::now();
                 walls[c] = finishRange(world, dt, edge[c], edge[c + 1], lanes, finite[c], drift, moved[c]);
                 seconds[c] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             });
-        if (world.passSchedule.adapt)
-            updatePassSpeeds(world.passSchedule, edge, seconds, chunks);
+        if (world.exec.passSchedule.adapt)
+            updatePassSpeeds(world.exec.passSchedule, edge, seconds, chunks);
         mergeWallHealth(world.health, walls, chunks);
         world.health.finite = std::all_of(finite, finite + chunks, [](bool b) { return b; });
         for (int c = 0; c < chunks; ++c) // a maximum: the same for any chunking
@@ -245,11 +245,11 @@ Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
 }
 
 /// True if the integration loops run in AVX2 lanes (integrate.cpp, the same bits as the scalar
-/// loops): the lane kernels are on (World::batchedContactKernel), the variant in use is "avx2",
+/// loops): the lane kernels are on (Execution::batchedContactKernel), the variant in use is "avx2",
 /// and there are at least four particles (one ball keeps the scalar loop).
 bool integrationInLanes(const World& world)
 {
-    return world.particles.size() >= 4 && world.batchedContactKernel && exec::isAvx2();
+    return world.particles.size() >= 4 && world.exec.batchedContactKernel && exec::isAvx2();
 }
 
 /// step() for a world of one particle (a single-ball verification run): the same stages in the
@@ -388,10 +388,11 @@ void step(World& world, Real dt)
     if (!world.prepared)
         prepare(world);
 
-    if (world.particles.size() == 1 && world.fusedSteps && !world.profile.enabled && !world.observer)
+    if (world.particles.size() == 1 && world.exec.fusedSteps && !world.exec.profile.enabled &&
+        !world.observer)
         return stepOneParticle(world, dt); // the stages below, the ball's state in registers
 
-    StageClock clock(world.profile);
+    StageClock clock(world.exec.profile);
     const bool lanes = integrationInLanes(world);
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
@@ -408,8 +409,8 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
     const auto failed = [&]
     { return !world.health.finite || world.health.maxOverlapRatio > maxOverlapRatio; };
     if (world.particles.size() <= 1 || world.observer ||
-        !world.fusedSteps) // (one ball has its own step,
-                           // with nothing to fuse; an observer sees every step's end)
+        !world.exec.fusedSteps) // (one ball has its own step,
+                                // with nothing to fuse; an observer sees every step's end)
     {
         for (std::uint64_t s = 0; s < steps; ++s)
         {
@@ -419,7 +420,7 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
         }
         return steps;
     }
-    StageClock clock(world.profile);
+    StageClock clock(world.exec.profile);
     const bool lanes = integrationInLanes(world);
     Motion moved = kickDrift(world.particles, world.gravity, dt,
                              world.neighbors.motionReference(world.particles.size()), lanes);

@@ -131,6 +131,24 @@ class StepObserver
     virtual void afterStep(const World& world, Real dt) = 0;
 };
 
+/// How the step is executed, with no physics in it: which kernels and step paths run, how the
+/// threads share the work, and the stage timers. It never changes a bit of the result (the
+/// Determinism tests), so it is not saved in a checkpoint.
+struct Execution
+{
+    bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
+                                      // the scalar path, which false selects; pair_kernel.h)
+    // The fused step paths (world.cpp): one particle's step with its state in registers, and
+    // advance()'s closing kick fused with the next step's kick-drift. Same bits either way; false
+    // runs the general stages, to measure what the fusion pays (veridem_bench --no-fusion).
+    bool fusedSteps = true;
+    PairSchedule pairSchedule;
+    PassSchedule passSchedule;
+    StepProfile profile;
+};
+
+/// The physical state of a DEM run (particles, walls, materials, contacts and their history,
+/// time) and, beside it, how the step is executed (`exec`).
 struct World
 {
     ParticleStore particles;
@@ -147,15 +165,7 @@ struct World
     Real time = 0;             // [s]
     std::uint64_t stepCount = 0;
     StepHealth health;
-    StepProfile profile;
-    PairSchedule pairSchedule;
-    PassSchedule passSchedule;
-    bool batchedContactKernel = true; // four contacts at a time where the law allows (same bits as
-                                      // the scalar path, which false selects; pair_kernel.h)
-    // The fused step paths (world.cpp): one particle's step with its state in registers, and
-    // advance()'s closing kick fused with the next step's kick-drift. Same bits either way; false
-    // runs the general stages, to measure what the fusion pays (veridem_bench --no-fusion).
-    bool fusedSteps = true;
+    Execution exec;
     bool prepared = false;
     StepObserver* observer = nullptr; // not owned; null: none
 

@@ -68,10 +68,10 @@ World runOn(int threads, int steps, int side = 13, bool adapt = true, std::vecto
 {
     const exec::ThreadCountOverride loops(threads);
     World world = jostlingBox(true, side);
-    world.pairSchedule.adapt = adapt;
-    world.passSchedule.adapt = adapt;
-    world.pairSchedule.speed = speeds;
-    world.passSchedule.speed = speeds;
+    world.exec.pairSchedule.adapt = adapt;
+    world.exec.passSchedule.adapt = adapt;
+    world.exec.pairSchedule.speed = speeds;
+    world.exec.passSchedule.speed = speeds;
     for (int s = 0; s < steps; ++s)
         step(world, 1e-5);
     return world;
@@ -115,11 +115,11 @@ TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
     World three = runOn(3, steps, side, false);
     World skewed = runOn(2, steps, side, true, {1e6, 4e6});
     ASSERT_EQ((one.particles.size() + NeighborList::kBlockParticles - 1) / NeighborList::kBlockParticles, 5u);
-    ASSERT_EQ(two.pairSchedule.runs.size(), 2u);
-    ASSERT_EQ(three.pairSchedule.runs.size(), 3u);
-    EXPECT_NE(two.pairSchedule.runs[0].end, three.pairSchedule.runs[1].end) // different boundaries
-        << two.pairSchedule.runs[0].end << " " << three.pairSchedule.runs[0].end << " "
-        << three.pairSchedule.runs[1].end;
+    ASSERT_EQ(two.exec.pairSchedule.runs.size(), 2u);
+    ASSERT_EQ(three.exec.pairSchedule.runs.size(), 3u);
+    EXPECT_NE(two.exec.pairSchedule.runs[0].end, three.exec.pairSchedule.runs[1].end) // different boundaries
+        << two.exec.pairSchedule.runs[0].end << " " << three.exec.pairSchedule.runs[0].end << " "
+        << three.exec.pairSchedule.runs[1].end;
     EXPECT_GT(one.health.touchingPairs, 0u);
     for (const World* w : {&two, &three, &skewed})
     {
@@ -139,7 +139,7 @@ TEST(Determinism, AnySplitOfTheBlocksGivesTheSameBits)
 TEST(Determinism, BatchedContactPathMatchesScalarPath)
 {
     World scalar = jostlingBox(true);
-    scalar.batchedContactKernel = false;
+    scalar.exec.batchedContactKernel = false;
     for (int s = 0; s < 1000; ++s)
         step(scalar, 1e-5);
     const std::string initial = exec::isaName();
@@ -150,7 +150,7 @@ TEST(Determinism, BatchedContactPathMatchesScalarPath)
             continue; // this CPU cannot run it
         ++variants;
         World batched = jostlingBox(true);
-        batched.batchedContactKernel = true;
+        batched.exec.batchedContactKernel = true;
         for (int s = 0; s < 1000; ++s)
             step(batched, 1e-5);
         EXPECT_TRUE(sameBits(batched.particles.position, scalar.particles.position)) << variant;
@@ -225,7 +225,7 @@ TEST(Determinism, PlaneWallPassMatchesScalarPathOnAMovingDisk)
         floor.motion.velocity = {0.02, -0.01, 0};
         floor.motion.angularVelocity = {0, 0, 40};
         floor.motion.rotationCentre = {0.5 * box, 0.5 * box, 0};
-        world.batchedContactKernel = batched;
+        world.exec.batchedContactKernel = batched;
         for (int s = 0; s < 500; ++s)
             step(world, 1e-5);
         return world;
@@ -492,7 +492,7 @@ TEST(Determinism, EveryModelInLanesMatchesScalarPath)
             const auto run = [&](bool batched)
             {
                 World world = modelBox(cases[c], dish);
-                world.batchedContactKernel = batched;
+                world.exec.batchedContactKernel = batched;
                 for (int s = 0; s < 300; ++s)
                     step(world, 1e-5);
                 return world;

@@ -16,7 +16,7 @@ namespace veridem::dem
 
 inline constexpr int kMaxChunks = 64; // threads of a force stage, at most
 
-/// The runs of blocks the threads evaluate (world.pairSchedule), remade when the candidate
+/// The runs of blocks the threads evaluate (world.exec.pairSchedule), remade when the candidate
 /// sub-list, the slots or the thread count changed. Weight of a block: its touching candidates
 /// (the selection and the kernel follow their count), a cross-block one counted three times,
 /// because its partner lies in another block and it stores a deferred entry. On the 20k bed,
@@ -29,7 +29,7 @@ template <class ActiveFrom>
 inline const std::vector<BlockRun>& scheduleBlocks(World& world, std::size_t blocks, int chunks,
                                                    const ActiveFrom& activeFrom)
 {
-    PairSchedule& s = world.pairSchedule;
+    PairSchedule& s = world.exec.pairSchedule;
     const NeighborList& list = world.neighbors;
     const std::size_t n = world.particles.size();
     if (s.chunks != chunks || s.subListRebuilds != list.activeRebuildCount() ||
