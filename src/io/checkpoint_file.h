@@ -26,7 +26,8 @@
 namespace veridem::io
 {
 
-inline constexpr std::uint32_t kCheckpointVersion = 2; // 2: the 3D energy ledger records (enLg, enSt)
+inline constexpr std::uint32_t kCheckpointVersion = 3; // 2: the 3D energy ledger records (enLg, enSt); 3: its
+                                                     // adhesion dissipation
 
 enum class CheckpointEngine : std::uint32_t
 {
