@@ -167,21 +167,6 @@ template <class T> struct ContactHistoryOf
 };
 using ContactHistory = ContactHistoryOf<Real>;
 
-/// Entry k of history kept as parallel arrays (the contact lists'): the tangential spring, and
-/// the rolling spring only if `keepRolling` (an EPSD rolling model is in use; else it is empty).
-inline ContactHistory historyAt(const std::vector<Vec3>& tangential, const std::vector<Vec3>& rolling,
-                                bool keepRolling, std::size_t k)
-{
-    return {tangential[k], keepRolling ? rolling[k] : Vec3{}};
-}
-inline void storeHistoryAt(std::vector<Vec3>& tangential, std::vector<Vec3>& rolling, bool keepRolling,
-                           std::size_t k, const ContactHistory& h)
-{
-    tangential[k] = h.tangentialSpring;
-    if (keepRolling)
-        rolling[k] = h.rollingSpring;
-}
-
 template <class T> struct ContactOutputOf
 {
     lanes::Vec3Of<T> force;           // total force on i [N] (normal + tangential)
