@@ -79,7 +79,7 @@ TEST(CylinderWall, RotatingDrumSurfaceVelocityIsOmegaCrossR)
     const Real omega = 3.0;
     drum.motion.angularVelocity = omega * kAxis;
     drum.motion.rotationCentre = kPoint;
-    // The contact point of the gap (x - (r - overlap/2) n ... any point on the surface).
+    // A point of the surface, 0.07 m along the axis (the surface velocity is the rigid field there).
     const Vec3 onSurface = kPoint + 0.07 * kAxis + 0.1 * kAcross;
     const Vec3 v = wallSurfaceVelocity(drum, onSurface);
     const Vec3 expected = cross(omega * kAxis, 0.1 * kAcross); // omega x r from the axis
