@@ -12,6 +12,7 @@
 #include "io/region_output.h"
 #include "io/run_control.h"
 #include "io/thermo_output.h"
+#include "io/wall_output.h"
 
 #include <algorithm>
 #include <chrono>
@@ -133,11 +134,13 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             ? std::max<std::uint64_t>(1, std::llround(scene.checkpointInterval / scene.dt))
             : 0;
     std::optional<io::ParticleRecorder::Resume> resume;
-    std::optional<std::uint64_t> thermoBytes, regionBytes;
+    std::optional<std::uint64_t> thermoBytes, regionBytes, wallBytes;
     const io::MeasurementOptions& measure = scene.measurements;
     dem::EnergyLedger ledger; // with `[output] energy = true`: world.observer
     dem::EnergyLedgerState* const ledgerState = measure.energy ? &ledger.state : nullptr;
-    const std::size_t outputFiles = measure.region ? 3 : 2; // particles.csv, thermo.csv, region.csv
+    // particles.csv, thermo.csv, region.csv (if measured), walls.csv (if there are walls)
+    const bool wallLoads = !world.walls.empty();
+    const std::size_t outputFiles = (measure.region ? 3 : 2) + (wallLoads ? 1 : 0);
     if (!options.restartFile.empty())
     {
         const io::CheckpointOutputs saved =
@@ -150,6 +153,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         thermoBytes = saved.fileBytes[1];
         if (measure.region)
             regionBytes = saved.fileBytes[2];
+        if (wallLoads)
+            wallBytes = saved.fileBytes.back();
         if (world.stepCount > totalSteps)
             throw InputError("checkpoint '" + options.restartFile + "' is at step " +
                              std::to_string(world.stepCount) + ", after the scene's last step " +
@@ -160,6 +165,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     }
     else
         dem::prepare(world);
+    world.wallContacts.setRecordLoads(wallLoads);
     if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
         throw InputError("--stop-at-step " + std::to_string(*options.stopAtStep) +
                          " is not after the start step " + std::to_string(world.stepCount));
@@ -180,6 +186,9 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     std::optional<io::RegionRecorder> region;
     if (measure.region)
         region.emplace(options.outDir, measure.regionMin, measure.regionMax, regionBytes);
+    std::optional<io::WallLoadRecorder> walls;
+    if (wallLoads)
+        walls.emplace(options.outDir, wallBytes);
     const auto recordOutputs = [&]
     {
         recorder.record(world);
@@ -189,6 +198,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             contacts->record(world, now);
         if (region)
             region->record(world, now);
+        if (walls)
+            walls->record(world);
     };
     const auto closeOutputs = [&]
     {
@@ -196,6 +207,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         thermo.close();
         if (region)
             region->close();
+        if (walls)
+            walls->close();
     };
     if (!resume)
         recordOutputs();
@@ -205,6 +218,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         std::vector<std::uint64_t> bytes = {recorder.csvBytes(), thermo.size()};
         if (region)
             bytes.push_back(region->size());
+        if (walls)
+            bytes.push_back(walls->size());
         io::writeDemCheckpoint(checkpointPath, world, sceneHash, {recorder.frameTimes(), bytes, 0},
                                ledgerState);
     };

@@ -207,14 +207,22 @@ inline bool kickThenKickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
 /// unchanged; only translation moves it). An oscillating wall is put at its exact position
 /// A sin(Omega (t+dt)), and its velocity is set to A Omega cos(Omega (t+dt/2)): the contact law
 /// pairs it with the particles' half-step velocities, and it is the displacement over the step
-/// divided by dt to O(dt^2).
+/// divided by dt to O(dt^2). A wall with a velocity table is put at the table's exact integral
+/// and takes its velocity at t+dt/2; with an angular-velocity table, its angular velocity at t+dt/2.
 inline void moveWalls(std::vector<Wall>& walls, Real dt)
 {
     for (Wall& w : walls)
     {
         w.clock += dt;
         const Real omega = w.motion.oscillationAngularFrequency;
-        if (omega > 0)
+        if (!w.motion.angularVelocityTable.empty()) [[unlikely]]
+            w.motion.angularVelocity = w.motion.angularVelocityTable.at(w.clock - 0.5 * dt);
+        if (!w.motion.velocityTable.empty()) [[unlikely]]
+        {
+            w.displacement = w.motion.velocityTable.integralFromZero(w.clock);
+            w.motion.velocity = w.motion.velocityTable.at(w.clock - 0.5 * dt);
+        }
+        else if (omega > 0)
         {
             w.displacement = std::sin(omega * w.clock) * w.motion.oscillationAmplitude;
             w.motion.velocity =

@@ -11,12 +11,40 @@ namespace veridem::dem
 
 bool WallContactList::needsRebuild(const std::vector<Wall>& walls, Real skin) const
 {
-    if (wallDisplacementAtBuild_.size() != walls.size())
+    if (wallDisplacementAtBuild_.size() != walls.size() || wallActiveAtBuild_.size() != walls.size())
         return true;
     for (std::size_t w = 0; w < walls.size(); ++w)
-        if (lengthSquared(walls[w].displacement - wallDisplacementAtBuild_[w]) > 0.25 * skin * skin)
+        if (lengthSquared(walls[w].displacement - wallDisplacementAtBuild_[w]) > 0.25 * skin * skin ||
+            wallActive(walls[w]) != bool(wallActiveAtBuild_[w]))
             return true;
     return false;
+}
+
+void WallContactList::markActivity(const std::vector<Wall>& walls)
+{
+    wallActiveAtBuild_.resize(walls.size());
+    for (std::size_t w = 0; w < walls.size(); ++w)
+        wallActiveAtBuild_[w] = wallActive(walls[w]);
+}
+
+void WallContactList::setRecordLoads(bool on)
+{
+    recordLoads = on;
+    loadForce.assign(on ? particle.size() : 0, Vec3{});
+    loadMoment.assign(on ? particle.size() : 0, Vec3{});
+}
+
+WallLoad wallLoad(const WallContactList& list, std::uint32_t w, const Vec3& reference)
+{
+    Vec3 force, moment;
+    for (std::size_t k = 0; k < list.loadForce.size() && k < list.size(); ++k)
+        if (list.wall[k] == w)
+        {
+            force += list.loadForce[k];
+            moment += list.loadMoment[k];
+        }
+    // On the particles about the reference: moment - reference x force; the wall takes minus that.
+    return {-force, cross(reference, force) - moment};
 }
 
 void WallContactList::rebuild(const ParticleStore& particles, const std::vector<Wall>& walls, Real skin,
@@ -26,6 +54,7 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     wallDisplacementAtBuild_.resize(walls.size());
     for (std::size_t w = 0; w < walls.size(); ++w)
         wallDisplacementAtBuild_[w] = walls[w].displacement;
+    markActivity(walls);
 
     // Candidates per chunk of particles, concatenated in order (sorted by (particle, wall)).
     const int chunks = std::min(loopThreads(n), 64);
@@ -71,6 +100,11 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     history.carry(source.data(), count);
     particle.swap(newParticle);
     wall.swap(newWall);
+    if (recordLoads)
+    {
+        loadForce.assign(count, Vec3{});
+        loadMoment.assign(count, Vec3{});
+    }
     start.assign(n + 1, 0);
     for (std::size_t k = 0; k < count; ++k)
         ++start[particle[k] + 1];
@@ -90,7 +124,8 @@ std::size_t WallContactList::slotOf(std::uint32_t particleIndex, std::uint32_t w
 std::size_t WallContactList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-    return bytes(particle) + bytes(wall) + bytes(start) + bytes(wallDisplacementAtBuild_);
+    return bytes(particle) + bytes(wall) + bytes(start) + bytes(wallDisplacementAtBuild_) +
+           bytes(wallActiveAtBuild_) + bytes(loadForce) + bytes(loadMoment);
 }
 
 } // namespace veridem::dem

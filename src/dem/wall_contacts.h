@@ -30,7 +30,8 @@ class WallContactList
     std::vector<std::uint32_t> wall;
     std::vector<std::uint32_t> start; // slots [start[p], start[p+1]) belong to particle p
 
-    /// True if some wall translated more than skin/2 since the last build (or never built).
+    /// True if some wall translated more than skin/2, or switched on or off (wallActive), since
+    /// the last build (or never built).
     bool needsRebuild(const std::vector<Wall>& walls, Real skin) const;
     /// Rebuilds the candidate list and re-keys `history` (its entries are the slots') by
     /// (particle, wall).
@@ -42,12 +43,34 @@ class WallContactList
     /// near that wall.
     std::size_t slotOf(std::uint32_t particleIndex, std::uint32_t wallIndex) const;
 
+    /// After a restore: records the walls' current activity as that of the last build (a wall
+    /// that switches on or off forces a rebuild in the step it does, so they agree).
+    void markActivity(const std::vector<Wall>& walls);
+
+    // Wall loads (recordLoads, off by default): slot k's force on its particle [N] and that
+    // force's moment about the origin plus the contact's torque on the particle [N m], from the
+    // last force evaluation (zero if not touching); wallLoad() sums them per wall.
+    bool recordLoads = false;
+    std::vector<Vec3> loadForce, loadMoment;
+    /// Switches the load record on (zeroed, sized to the slots) or off.
+    void setRecordLoads(bool on);
+
     std::size_t size() const { return particle.size(); }
     std::size_t memoryBytes() const;
 
   private:
     friend struct CheckpointAccess; // io/dem_checkpoint.cpp saves and restores the private state
     std::vector<Vec3> wallDisplacementAtBuild_;
+    std::vector<std::uint8_t> wallActiveAtBuild_;
 };
+
+/// The load of wall w on the particles' side: the total force ON the wall [N] (minus the sum of
+/// its contacts' forces on the particles) and its torque [N m] about `reference` [m], summed over
+/// the slots in slot order (the same bits on any thread count). Needs recordLoads.
+struct WallLoad
+{
+    Vec3 force, torque;
+};
+WallLoad wallLoad(const WallContactList& list, std::uint32_t w, const Vec3& reference);
 
 } // namespace veridem::dem

@@ -64,6 +64,22 @@ VERIDEM_HOT_INLINE void foldWallOverlap(std::uint32_t i, Real overlap, Real radi
         health = {ratio, i, true, health.touching};
 }
 
+/// Records slot k's force [N] on particle i (at x [m]) and torque [N m] for the wall loads
+/// (WallContactList::recordLoads): the force and its moment about the origin plus the torque.
+VERIDEM_HOT_INLINE void recordWallLoad(WallContactList& list, std::size_t k, const Vec3& x, const Vec3& force,
+                                       const Vec3& torque)
+{
+    list.loadForce[k] = force;
+    list.loadMoment[k] = cross(x, force) + torque;
+}
+
+/// Zeroes the load record of slots [first, last) before a pass (the touching ones are written).
+void clearWallLoads(WallContactList& list, std::size_t first, std::size_t last)
+{
+    for (std::size_t k = first; k < last; ++k)
+        list.loadForce[k] = list.loadMoment[k] = Vec3{};
+}
+
 /// Adds one wall contact's force and torque to particle i and folds its overlap into `health`.
 void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const Vec3& torque, Real overlap,
                     ContactHealth& health)
@@ -82,6 +98,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     const WallContactList& list = world.wallContacts;
     ContactHistoryStore& history = world.wallHistory;
     ContactHealth health{0, 0, false, 0};
+    const bool loads = list.recordLoads;
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
     const WallLaw kernel = exec::isAvx2() ? wallLawAvx2 : wallLawPortable;
@@ -98,8 +115,11 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
             history.set(b.slot[q],
                         ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
             const Vec3 arm = wallArm(p.radius[i], normal);
-            addWallContact(p, i, b.normalForce[q] * normal + tangential,
-                           b.rollingTorqueOf(q) + cross(arm, tangential), b.overlap[q], health);
+            const Vec3 f = b.normalForce[q] * normal + tangential,
+                       t = b.rollingTorqueOf(q) + cross(arm, tangential);
+            if (loads)
+                recordWallLoad(world.wallContacts, b.slot[q], p.position[i], f, t);
+            addWallContact(p, i, f, t, b.overlap[q], health);
         }
         m = 0;
         b.models = 0;
@@ -210,6 +230,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     const std::uint32_t* const wallOf = list.wall.data();
     Vec3* const spring = history.spring.data();
     const bool rolling = history.keepRolling;
+    const bool loads = list.recordLoads;
     const Real halfStep = 0.5 * dt;
     LawBatch b;
     std::size_t m = 0;
@@ -242,6 +263,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             torque[i].x += t.x;
             torque[i].y += t.y;
             torque[i].z += t.z;
+            if (loads)
+                recordWallLoad(world.wallContacts, b.slot[q], position[i], f, t);
             foldWallOverlap(i, b.overlap[q], radius[i], health);
         }
         m = 0;
@@ -312,8 +335,11 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
     ContactHistory history = store.at(k);
     const ContactOutput out = evaluateContact(params, in, history, dt);
     store.set(k, history);
+    const Vec3 contactTorque = out.rollingTorque + cross(arm, out.tangentialForce);
+    if (world.wallContacts.recordLoads)
+        recordWallLoad(world.wallContacts, k, s.position, out.force, contactTorque);
     force += out.force;
-    torque += out.rollingTorque + cross(arm, out.tangentialForce);
+    torque += contactTorque;
     foldWallOverlap(i, in.overlap, s.radius, health);
 }
 
@@ -326,6 +352,8 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     ContactHealth health{0, 0, false, 0};
     if (list.size() == 0 || list.start.size() != p.size() + 1)
         return health;
+    if (list.recordLoads)
+        clearWallLoads(list, list.start[begin], list.start[end]);
     if (world.exec.batchedContactKernel)
     {
         PlaneFrame frames[kMaxPlaneFrames];
@@ -345,10 +373,12 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
 ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const ParticleState& s, Vec3& force,
                              Vec3& torque)
 {
-    const WallContactList& list = world.wallContacts;
+    WallContactList& list = world.wallContacts;
     ContactHealth health{0, 0, false, 0};
     if (list.size() == 0 || list.start.size() != world.particles.size() + 1)
         return health;
+    if (list.recordLoads)
+        clearWallLoads(list, list.start[i], list.start[i + 1]);
     for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k)
         wallContactScalar(world, dt, k, i, s, force, torque, health);
     return health;

@@ -303,6 +303,7 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
 
     dem::CheckpointAccess::read(in, world.neighbors, world.pairHistory, n);
     dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, walls);
+    world.wallContacts.markActivity(world.walls); // (not saved: the walls' clocks give it)
     const bool hasLedger = in.value<std::uint8_t>("enLg") != 0;
     if (hasLedger != (ledger != nullptr))
         in.fail(hasLedger ? "keeps an energy ledger, the scene does not"

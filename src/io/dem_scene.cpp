@@ -6,6 +6,7 @@
 #include "dem/walls/wall.h"
 #include "io/scene_limits.h"
 #include "io/toml_reader.h"
+#include "io/wall_keys.h"
 
 #include <cmath>
 #include <cstring>
@@ -97,7 +98,7 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
 {
     dem::Wall wall;
     wall.name = t.requiredString("name");
-    const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish"});
+    const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish", "cylinder"});
     wall.material = world.materialId(t.requiredString("material"));
     if (type == "plane")
     {
@@ -134,6 +135,8 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
         wall.motion.angularVelocity = t.number("omega", 0.0) * disk.normal;
         wall.motion.rotationCentre = disk.point;
     }
+    else if (type == "cylinder")
+        static_cast<void>(readCylinder(t, wall)); // (caps: readDemScene adds them)
     else
     {
         dem::DishShape dish;
@@ -144,6 +147,7 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
         wall.motion.angularVelocity = {0, 0, t.number("omega", 0.0)};
         wall.motion.rotationCentre = dish.lowestPoint;
     }
+    readCommonWallKeys(t, wall, symmetryAxis(wall));
     t.finish();
     return wall;
 }
@@ -154,6 +158,8 @@ void placeOnWall(dem::World& world, std::uint32_t i, const dem::Wall& wall, bool
     auto& p = world.particles;
     const Real r = p.radius[i];
     Vec3 normal;
+    if (std::holds_alternative<dem::CylinderShape>(wall.shape))
+        t.fail("on_wall", "supports plane, turntable and dish walls, not a cylinder");
     if (const auto* plane = std::get_if<dem::PlaneShape>(&wall.shape))
     {
         normal = plane->normal;
@@ -422,7 +428,12 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
 
     auto pairs = top.arrayOfTables("pair");
     for (auto& w : top.arrayOfTables("wall"))
+    {
         world.walls.push_back(readWall(w, world));
+        if (std::holds_alternative<dem::CylinderShape>(world.walls.back().shape) && w.boolean("caps", false))
+            for (dem::Wall& cap : cylinderCaps(world.walls.back()))
+                world.walls.push_back(std::move(cap));
+    }
 
     Real maxSpeed = 0;
     for (auto& s : top.arrayOfTables("sphere"))

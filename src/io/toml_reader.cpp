@@ -262,6 +262,40 @@ std::optional<Vec3> TableReader::optionalVec3(std::string_view key)
     return Vec3{c[0], c[1], c[2]};
 }
 
+std::vector<std::vector<Real>> TableReader::numberRows(std::string_view key,
+                                                       const std::vector<std::size_t>& widths)
+{
+    std::vector<std::vector<Real>> rows;
+    const toml::node* n = node(key);
+    if (!n)
+        return rows;
+    std::string expected;
+    for (const std::size_t w : widths)
+        expected += (expected.empty() ? "" : " or ") + std::to_string(w);
+    const toml::array* a = n->as_array();
+    if (!a || a->empty())
+        fail(key, "must be a non-empty array of rows of " + expected + " numbers, e.g. [[0, 1], [2, 3]]");
+    for (const auto& element : *a)
+    {
+        const toml::array* row = element.as_array();
+        if (!row || std::find(widths.begin(), widths.end(), row->size()) == widths.end())
+            fail(key, "must be an array of rows of " + expected + " numbers each; row " +
+                          std::to_string(rows.size() + 1) + " is not");
+        std::vector<Real> values;
+        for (const auto& cell : *row)
+        {
+            const auto v = cell.value<double>();
+            if (!v || !std::isfinite(*v))
+                fail(key, "row " + std::to_string(rows.size() + 1) + " must hold finite numbers");
+            values.push_back(*v);
+        }
+        if (!rows.empty() && values.size() != rows.front().size())
+            fail(key, "rows must all have the same length");
+        rows.push_back(std::move(values));
+    }
+    return rows;
+}
+
 Vec3 TableReader::vec3(std::string_view key, Vec3 defaultValue)
 {
     return optionalVec3(key).value_or(defaultValue);

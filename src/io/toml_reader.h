@@ -38,6 +38,9 @@ class TableReader
     Vec3 vec3(std::string_view key, Vec3 defaultValue);
     Vec3 requiredVec3(std::string_view key);
     std::optional<Vec3> optionalVec3(std::string_view key);
+    /// An array of rows of finite numbers, e.g. [[0, 1.5], [2, 3]], every row of the same length,
+    /// one of `widths`; empty if the key is absent.
+    std::vector<std::vector<Real>> numberRows(std::string_view key, const std::vector<std::size_t>& widths);
 
     std::optional<TableReader> table(std::string_view key);
     std::vector<TableReader> arrayOfTables(std::string_view key);

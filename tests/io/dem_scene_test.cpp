@@ -175,3 +175,65 @@ position = [0, 0, 0]
     EXPECT_DOUBLE_EQ(s.world.pairs(0, 0).mu, 0.15);
     EXPECT_DOUBLE_EQ(s.world.pairs(1, 1).mu, 0.9);
 }
+
+TEST(DemScene, CappedCylinderAddsTwoDiskWallsSharingItsMotion)
+{
+    const io::DemScene s = load(kHeader + R"(
+[[wall]]
+name = "drum"
+type = "cylinder"
+material = "steel"
+point = [0, 0, 0]
+axis = [0, 2, 0]
+radius = 0.05
+length = 0.03
+caps = true
+omega_table = [[0, 0], [1, 4]]
+active_until = 2
+[[sphere]]
+material = "steel"
+radius = 0.005
+position = [0, 0.015, 0]
+)");
+    const auto& walls = s.world.walls;
+    ASSERT_EQ(walls.size(), 3u);
+    EXPECT_EQ(walls[1].name, "drum/cap0");
+    EXPECT_EQ(walls[2].name, "drum/cap1");
+    const auto& c = std::get<dem::CylinderShape>(walls[0].shape);
+    EXPECT_EQ(c.axis, (Vec3{0, 1, 0}));
+    const auto& cap0 = std::get<dem::PlaneShape>(walls[1].shape);
+    const auto& cap1 = std::get<dem::PlaneShape>(walls[2].shape);
+    EXPECT_EQ(cap0.normal, (Vec3{0, 1, 0})); // facing into the drum
+    EXPECT_EQ(cap1.normal, (Vec3{0, -1, 0}));
+    EXPECT_EQ(cap1.point, (Vec3{0, 0.03, 0}));
+    EXPECT_EQ(cap0.diskRadius, 0.05);
+    for (const auto& w : walls)
+    {
+        EXPECT_EQ(w.motion.angularVelocityTable.at(0.5), (Vec3{0, 2, 0}));
+        EXPECT_EQ(w.activeUntil, 2);
+        EXPECT_EQ(w.loadPoint, (Vec3{0, 0, 0}));
+    }
+}
+
+TEST(DemScene, WallMotionKeysAreChecked)
+{
+    const std::string plane = kHeader + R"(
+[[sphere]]
+material = "steel"
+radius = 0.005
+position = [0, 0, 0.1]
+[[wall]]
+name = "floor"
+material = "steel"
+normal = [0, 0, 1]
+)";
+    EXPECT_NE(errorOf(plane + "velocity = [0, 0, 1]\nvelocity_table = [[0, 0, 0, 1]]\n")
+                  .find("'velocity_table' cannot be combined with a constant 'velocity'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(plane + "velocity_table = [[0, 0, 0, 1], [0, 0, 0, 2]]\n").find("strictly increasing"),
+              std::string::npos);
+    EXPECT_NE(errorOf(plane + "velocity_table = [[0, 0, 1]]\n").find("rows of 4 numbers"), std::string::npos);
+    EXPECT_NE(errorOf(plane + "active_from = 1\nactive_until = 0.5\n").find("'active_until' must be after"),
+              std::string::npos);
+    EXPECT_NE(errorOf(plane + "caps = true\n").find("caps"), std::string::npos); // not a plane key
+}

@@ -8,7 +8,8 @@ same directory and into a fresh one; a run stopped by SIGINT at an unknown step 
 (and one stopped by SIGTERM: status 143). Every one must end in the same state: the final checkpoints are compared record by record (every
 particle array, the neighbour list with its contact history, the wall contacts, time and step
 count: all but the output counters) and, in the same directory, the output files byte for byte.
-The springs are checked to be non-zero, so history is really carried.
+The springs are checked to be non-zero, so history is really carried; walls.csv (the wall loads)
+must be byte-identical on 1 and 2 threads.
 2D (restart_block_2d.toml: a block sliding with friction after a settling): the same with
 k1 = 333, k2 = 1000.
 Refusals: a checkpoint of another scene, of another format version, of the other engine, a
@@ -88,11 +89,16 @@ def nonzero_doubles(blob):
 
 
 # ---- 3D ----
-outputs3d = ["checkpoint.bin", "particles.csv", "thermo.csv", "particles.pvd", "particles_000006.vtp"]
+outputs3d = ["checkpoint.bin", "particles.csv", "thermo.csv", "walls.csv", "particles.pvd", "particles_000006.vtp"]
 run(scene3d, "straight1", "--threads", "1")
 run(scene3d, "straight2", "--threads", "2")
 check(open(f"{out}/straight1/checkpoint.bin", "rb").read() == open(f"{out}/straight2/checkpoint.bin", "rb").read(),
       "3D: the straight runs on 1 and 2 threads differ")
+# walls.csv (the loads, summed in slot order) has the same bits on any thread count, and the
+# floor carries the bed.
+same_files("straight1", "straight2", ["walls.csv"], "3D walls.csv on 1 and 2 threads")
+check(any(float(line.split(",")[4]) != 0 for line in open(f"{out}/straight1/walls.csv").read().splitlines()[1:]),
+      "3D: walls.csv has no load")
 final = records(f"{out}/straight1/checkpoint.bin")
 print("3D final state: non-zero pair springs", nonzero_doubles(final["acSp"]), "rolling springs",
       nonzero_doubles(final["acRo"]), "wall springs", nonzero_doubles(final["wcTS"]))
@@ -130,7 +136,7 @@ if process.returncode == 130:
     run(long3d, "sigint", "--threads", "1", "--restart", f"{out}/sigint/checkpoint.bin", "--stop-at-step", target)
     run(long3d, "sigint_straight", "--threads", "1", "--stop-at-step", target)
     same_state(f"{out}/sigint_straight/checkpoint.bin", f"{out}/sigint/checkpoint.bin", "3D after SIGINT")
-    same_files("sigint_straight", "sigint", ["particles.csv", "thermo.csv", "particles.pvd"], "3D after SIGINT")
+    same_files("sigint_straight", "sigint", ["particles.csv", "thermo.csv", "walls.csv", "particles.pvd"], "3D after SIGINT")
 
 # SIGTERM: the same stop, status 143.
 process = subprocess.Popen([veridem, "run", long3d, "--quiet", "--threads", "1", "--out", f"{out}/sigterm"],

@@ -7,13 +7,19 @@
 //             (a turntable is a disk that rotates about its own normal).
 //   Dish      the inside of a sphere of radius R whose lowest point is `lowestPoint`
 //             (centre C = lowestPoint + R z); only the lower hemisphere is solid.
+//   Cylinder  the lateral surface of a finite circular cylinder, particles inside (a drum) or
+//             outside (a post); dem/walls/cylinder.h.
 //
 // Rotation is restricted to the shape's symmetry axis (plane normal, dish vertical axis), so the
-// geometry itself never changes with time; translation moves the geometry.
+// geometry itself never changes with time; translation moves the geometry. The velocity and the
+// angular velocity may follow piecewise-linear tables in time (dem/walls/motion_table.h). A wall
+// may exist only in a time window [activeFrom, activeUntil): outside it, it has no contacts.
 #pragma once
 
 #include "core/hot.h"
 #include "core/vec3.h"
+#include "dem/walls/cylinder.h"
+#include "dem/walls/motion_table.h"
 
 #include <cmath>
 #include <cstdint>
@@ -48,17 +54,33 @@ struct WallMotion
     // translation cannot be combined with it.
     Vec3 oscillationAmplitude;
     Real oscillationAngularFrequency = 0;
+    // Piecewise-linear tables in time (empty: none). With velocityTable, the step sets the
+    // displacement to its exact integral and `velocity` to its value at the half step; with
+    // angularVelocityTable [rad/s] (vectors along the symmetry axis), `angularVelocity` to its
+    // value at the half step (see moveWalls).
+    MotionTable velocityTable;
+    MotionTable angularVelocityTable;
 };
 
 struct Wall
 {
     std::string name;
-    std::variant<PlaneShape, DishShape> shape;
+    std::variant<PlaneShape, DishShape, CylinderShape> shape;
     WallMotion motion;
     std::uint32_t material = 0;
     Vec3 displacement; // accumulated translation since t = 0 [m] (updated by the step)
     Real clock = 0;    // time since t = 0 [s] (updated by the step; drives the oscillation)
+    // The wall exists while activeFrom <= clock < activeUntil [s] (default: always).
+    Real activeFrom = -std::numeric_limits<Real>::infinity();
+    Real activeUntil = std::numeric_limits<Real>::infinity();
+    Vec3 loadPoint; // reference point of the wall's load torque at t = 0 [m] (moves with the wall)
 };
+
+/// True if the wall exists at its current clock (Wall::activeFrom, activeUntil).
+inline bool wallActive(const Wall& wall)
+{
+    return wall.clock >= wall.activeFrom && wall.clock < wall.activeUntil;
+}
 
 /// Contact of a sphere (centre x, radius r) with a wall shape.
 struct WallGap
@@ -133,6 +155,8 @@ inline WallGap wallGap(const DishShape& dish, const Vec3& offset, const Vec3& x,
 
 inline WallGap wallGap(const Wall& wall, const Vec3& x, Real r)
 {
+    if (!wallActive(wall)) // (an inactive wall has no contact slots; the scene checks call this too)
+        return {};
     return std::visit([&](const auto& shape) { return wallGap(shape, wall.displacement, x, r); }, wall.shape);
 }
 
@@ -165,6 +189,8 @@ inline bool wallNear(const DishShape& dish, const Vec3& offset, const Vec3& x, R
 
 inline bool wallNear(const Wall& wall, const Vec3& x, Real r, Real reach)
 {
+    if (!wallActive(wall))
+        return false;
     return std::visit([&](const auto& shape) { return wallNear(shape, wall.displacement, x, r, reach); },
                       wall.shape);
 }

@@ -1,0 +1,117 @@
+#include "io/wall_keys.h"
+
+#include <cmath>
+#include <limits>
+
+namespace veridem::io
+{
+
+namespace
+{
+
+/// The rows of `key` as a MotionTable: times strictly increasing; `toVector` maps a row's values
+/// after the time to a vector.
+template <class ToVector>
+dem::MotionTable readTable(TableReader& t, const char* key, const std::vector<std::size_t>& widths,
+                           ToVector toVector)
+{
+    const std::vector<std::vector<Real>> rows = t.numberRows(key, widths);
+    std::vector<Real> time;
+    std::vector<Vec3> value;
+    for (const auto& row : rows)
+    {
+        if (!time.empty() && !(row[0] > time.back()))
+            t.fail(key, "times (the first column, s) must be strictly increasing");
+        time.push_back(row[0]);
+        value.push_back(toVector(row));
+    }
+    return rows.empty() ? dem::MotionTable{} : dem::MotionTable(std::move(time), std::move(value));
+}
+
+} // namespace
+
+Vec3 symmetryAxis(const dem::Wall& wall)
+{
+    if (const auto* plane = std::get_if<dem::PlaneShape>(&wall.shape))
+        return plane->normal;
+    if (const auto* cylinder = std::get_if<dem::CylinderShape>(&wall.shape))
+        return cylinder->axis;
+    return {0, 0, 1}; // dish
+}
+
+void readCommonWallKeys(TableReader& t, dem::Wall& wall, const Vec3& axis)
+{
+    dem::WallMotion& m = wall.motion;
+    m.velocity = t.vec3("velocity", m.velocity); // (a plane has read it; the others read it here)
+    m.velocityTable = readTable(t, "velocity_table", {4},
+                                [](const std::vector<Real>& r) {
+                                    return Vec3{r[1], r[2], r[3]};
+                                });
+    if (!m.velocityTable.empty())
+    {
+        if (length(m.velocity) > 0)
+            t.fail("velocity_table", "cannot be combined with a constant 'velocity'");
+        if (m.oscillationAngularFrequency > 0)
+            t.fail("velocity_table", "cannot be combined with an oscillation");
+        m.velocity = m.velocityTable.at(0);
+    }
+    m.angularVelocityTable =
+        readTable(t, "omega_table", {2, 4},
+                  [&](const std::vector<Real>& r)
+                  {
+                      if (r.size() == 2)
+                          return r[1] * axis;
+                      const Vec3 w{r[1], r[2], r[3]};
+                      const Vec3 across = w - dot(w, axis) * axis;
+                      if (length(across) > 1e-12 * length(w))
+                          t.fail("omega_table", "must be about the wall's symmetry axis (plane "
+                                                "normal, dish z, cylinder axis): give [t, w] rows");
+                      return w;
+                  });
+    if (!m.angularVelocityTable.empty())
+    {
+        if (length(m.angularVelocity) > 0)
+            t.fail("omega_table", "cannot be combined with a constant 'omega'");
+        m.angularVelocity = m.angularVelocityTable.at(0);
+    }
+    wall.activeFrom = t.number("active_from", -std::numeric_limits<Real>::infinity());
+    wall.activeUntil = t.number("active_until", std::numeric_limits<Real>::infinity());
+    if (!(wall.activeUntil > wall.activeFrom))
+        t.fail("active_until", "must be after active_from (s)");
+    wall.loadPoint = t.vec3("load_point", m.rotationCentre);
+}
+
+bool readCylinder(TableReader& t, dem::Wall& wall)
+{
+    dem::CylinderShape c;
+    c.point = t.requiredVec3("point");
+    const Vec3 axis = t.requiredVec3("axis");
+    if (!(length(axis) > 0))
+        t.fail("axis", "must be a non-zero vector");
+    c.axis = axis / length(axis);
+    c.radius = t.requiredNumber("radius");
+    t.requirePositive("radius", c.radius, "m");
+    c.length = t.requiredNumber("length");
+    t.requirePositive("length", c.length, "m");
+    c.inside = t.choice("side", "inside", {"inside", "outside"}) == "inside";
+    wall.shape = c;
+    wall.motion.velocity = t.vec3("velocity", {});
+    wall.motion.angularVelocity = t.number("omega", 0.0) * c.axis;
+    wall.motion.rotationCentre = c.point;
+    return t.boolean("caps", false);
+}
+
+std::vector<dem::Wall> cylinderCaps(const dem::Wall& cylinder)
+{
+    const auto& c = std::get<dem::CylinderShape>(cylinder.shape);
+    // Inside (a drum) the caps face inwards; outside (a post) they face away from it.
+    const Real facing = c.inside ? 1.0 : -1.0;
+    std::vector<dem::Wall> caps(2, cylinder);
+    caps[0].name = cylinder.name + "/cap0";
+    caps[0].shape = dem::PlaneShape{c.point, facing * c.axis, c.radius};
+    caps[1].name = cylinder.name + "/cap1";
+    caps[1].shape = dem::PlaneShape{c.point + c.length * c.axis, -facing * c.axis, c.radius};
+    return caps;
+}
+
+} // namespace veridem::io
