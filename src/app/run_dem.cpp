@@ -8,6 +8,8 @@
 #include "io/contact_output.h"
 #include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
+#include "io/outlet_output.h"
+#include "io/particle_flow_keys.h"
 #include "io/particle_output.h"
 #include "io/region_output.h"
 #include "io/run_control.h"
@@ -29,7 +31,10 @@ namespace
 
 void checkTimeStep(const io::DemScene& scene, const RunOptions& options)
 {
-    const dem::TimeStepEstimate estimate = dem::estimateTimeStep(scene.world, scene.characteristicSpeed);
+    const dem::TimeStepEstimate estimate =
+        scene.flow.inserters.empty()
+            ? dem::estimateTimeStep(scene.world, scene.characteristicSpeed)
+            : dem::estimateTimeStep(io::timeStepProbe(scene.world, scene.flow), scene.characteristicSpeed);
     std::fprintf(stderr,
                  "veridem: dt = %.4g s; stability limit %.4g s (%s); shortest contact time %.4g s, "
                  "recommended dt <= tc/50 = %.4g s\n",
@@ -137,11 +142,15 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     const io::MeasurementOptions& measure = scene.measurements;
     dem::EnergyLedger ledger; // with `[output] energy = true`: world.observer
     dem::EnergyLedgerState* const ledgerState = measure.energy ? &ledger.state : nullptr;
-    const std::size_t outputFiles = measure.region ? 3 : 2; // particles.csv, thermo.csv, region.csv
+    dem::ParticleFlow& flow = scene.flow;
+    const bool outlets = !flow.outlets.empty();
+    // particles.csv, thermo.csv, region.csv, outlets.csv
+    const std::size_t outputFiles = 2 + std::size_t(measure.region) + std::size_t(outlets);
+    std::optional<std::uint64_t> outletBytes;
     if (!options.restartFile.empty())
     {
         const io::CheckpointOutputs saved =
-            io::readDemCheckpoint(options.restartFile, world, sceneHash, ledgerState);
+            io::readDemCheckpoint(options.restartFile, world, sceneHash, ledgerState, &flow);
         if (saved.fileBytes.size() != outputFiles)
             throw InputError("checkpoint '" + options.restartFile + "' is corrupt: it records " +
                              std::to_string(saved.fileBytes.size()) + " output files, this run has " +
@@ -150,6 +159,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         thermoBytes = saved.fileBytes[1];
         if (measure.region)
             regionBytes = saved.fileBytes[2];
+        if (outlets)
+            outletBytes = saved.fileBytes.back();
         if (world.stepCount > totalSteps)
             throw InputError("checkpoint '" + options.restartFile + "' is at step " +
                              std::to_string(world.stepCount) + ", after the scene's last step " +
@@ -159,7 +170,11 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                      world.time);
     }
     else
+    {
         dem::prepare(world);
+        if (!flow.empty())
+            flow.apply(world, scene.dt); // (step 0 is a flow step)
+    }
     if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
         throw InputError("--stop-at-step " + std::to_string(*options.stopAtStep) +
                          " is not after the start step " + std::to_string(world.stepCount));
@@ -180,6 +195,9 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     std::optional<io::RegionRecorder> region;
     if (measure.region)
         region.emplace(options.outDir, measure.regionMin, measure.regionMax, regionBytes);
+    std::optional<io::OutletRecorder> outletRecorder;
+    if (outlets)
+        outletRecorder.emplace(options.outDir, outletBytes);
     const auto recordOutputs = [&]
     {
         recorder.record(world);
@@ -189,6 +207,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             contacts->record(world, now);
         if (region)
             region->record(world, now);
+        if (outletRecorder)
+            outletRecorder->record(world.time, flow.outlets);
     };
     const auto closeOutputs = [&]
     {
@@ -196,6 +216,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         thermo.close();
         if (region)
             region->close();
+        if (outletRecorder)
+            outletRecorder->close();
     };
     if (!resume)
         recordOutputs();
@@ -205,8 +227,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         std::vector<std::uint64_t> bytes = {recorder.csvBytes(), thermo.size()};
         if (region)
             bytes.push_back(region->size());
+        if (outletRecorder)
+            bytes.push_back(outletRecorder->size());
         io::writeDemCheckpoint(checkpointPath, world, sceneHash, {recorder.frameTimes(), bytes, 0},
-                               ledgerState);
+                               ledgerState, &flow);
     };
     io::stopOnSignals();
 
@@ -226,6 +250,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             runEnd = std::min(runEnd, (s / checkpointEvery + 1) * checkpointEvery);
         if (options.stopAtStep)
             runEnd = std::min(runEnd, *options.stopAtStep);
+        if (!flow.empty()) // particles come and go between runs of steps
+            runEnd = std::min(runEnd, (s / flow.everySteps + 1) * flow.everySteps);
         const auto runStart = std::chrono::steady_clock::now();
         const std::uint64_t done = dem::advance(world, scene.dt, runEnd - s, scene.maxOverlapFraction);
         s += done;
@@ -249,6 +275,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             chunk *= 2;
         else if (runSeconds > 0.05 && chunk > 1)
             chunk /= 2;
+        if (!flow.empty() && s % flow.everySteps == 0)
+            flow.apply(world, scene.dt);
         if (s % outputEvery == 0 || s == totalSteps)
             recordOutputs();
         bool checkpointed = false;

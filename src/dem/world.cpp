@@ -99,6 +99,21 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
 }
 
+/// Holds the frozen particles: back to their positions (and position rows) with zero velocity and
+/// angular velocity, undoing what a kick or drift gave them (gravity, contact forces).
+[[gnu::noinline]] void holdFixedParticles(World& world)
+{
+    ParticleStore& p = world.particles;
+    for (std::size_t k = 0; k < world.fixedIndex.size(); ++k)
+    {
+        const std::uint32_t i = world.fixedIndex[k];
+        p.position[i] = world.fixedHome[k];
+        p.positionRadius[i] = p.positionRadiusRow(i);
+        p.velocity[i] = Vec3{};
+        p.angularVelocity[i] = Vec3{};
+    }
+}
+
 /// Particles per sub-pass of stage 4: their forces, torques, velocities and wall contacts
 /// (~200 B a particle) stay in L1/L2 between the three sub-passes (a whole chunk's do not).
 constexpr std::size_t kFinishBlock = 512;
@@ -377,10 +392,32 @@ void prepare(World& world)
     world.pairHistory.keepRolling = rollingHistory;
     world.wallHistory.keepRolling = rollingHistory;
     world.neighbors.reach = pairTouchReach(world);
+    refreshFixedParticles(world);
     rebuildContactLists(world);
     world.particles.refreshPositionRadius();
     world.prepared = true;
     computeForces(world, 0.0);
+}
+
+void refreshFixedParticles(World& world)
+{
+    const ParticleStore& p = world.particles;
+    world.fixedIndex.clear();
+    world.fixedHome.clear();
+    for (std::size_t i = 0; i < p.fixed.size(); ++i)
+        if (p.fixed[i])
+        {
+            world.fixedIndex.push_back(static_cast<std::uint32_t>(i));
+            world.fixedHome.push_back(p.position[i]);
+        }
+    world.neighbors.anyFixed = !world.fixedIndex.empty();
+}
+
+void rebuildAfterParticleChange(World& world)
+{
+    refreshFixedParticles(world);
+    world.neighbors.reach = pairTouchReach(world);
+    rebuildContactLists(world);
 }
 
 void step(World& world, Real dt)
@@ -389,7 +426,7 @@ void step(World& world, Real dt)
         prepare(world);
 
     if (world.particles.size() == 1 && world.exec.fusedSteps && !world.exec.profile.enabled &&
-        !world.observer)
+        !world.observer && world.fixedIndex.empty())
         return stepOneParticle(world, dt); // the stages below, the ball's state in registers
 
     StageClock clock(world.exec.profile);
@@ -397,7 +434,14 @@ void step(World& world, Real dt)
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
                   lanes);
-    stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
+    if (!world.fixedIndex.empty()) [[unlikely]] // frozen particles: back in place, at rest
+    {
+        holdFixedParticles(world);
+        stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
+        holdFixedParticles(world);
+    }
+    else
+        stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
     if (world.observer) [[unlikely]]
         world.observer->afterStep(world, dt);
 }
@@ -408,9 +452,9 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
         prepare(world);
     const auto failed = [&]
     { return !world.health.finite || world.health.maxOverlapRatio > maxOverlapRatio; };
-    if (world.particles.size() <= 1 || world.observer ||
-        !world.exec.fusedSteps) // (one ball has its own step,
-                                // with nothing to fuse; an observer sees every step's end)
+    if (world.particles.size() <= 1 || world.observer || !world.exec.fusedSteps ||
+        !world.fixedIndex.empty()) // (one ball has its own step, with nothing to fuse; an observer
+                                   // sees every step's end; frozen particles are held after each)
     {
         for (std::uint64_t s = 0; s < steps; ++s)
         {

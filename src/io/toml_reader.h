@@ -38,6 +38,10 @@ class TableReader
     Vec3 vec3(std::string_view key, Vec3 defaultValue);
     Vec3 requiredVec3(std::string_view key);
     std::optional<Vec3> optionalVec3(std::string_view key);
+    /// An array of finite numbers (empty if the key is absent).
+    std::vector<Real> numbers(std::string_view key);
+    /// An array of strings (empty if the key is absent).
+    std::vector<std::string> strings(std::string_view key);
 
     std::optional<TableReader> table(std::string_view key);
     std::vector<TableReader> arrayOfTables(std::string_view key);
