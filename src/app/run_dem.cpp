@@ -258,11 +258,15 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (s < runEnd || !world.health.finite || world.health.maxOverlapRatio > scene.maxOverlapFraction)
         {
             std::ostringstream m;
+            // (particles named by their stable id, as in the output)
+            const auto id = [&](std::uint32_t i)
+            { return i < world.particles.size() ? world.particles.id[i] : i; };
             m << "step " << world.stepCount << " (t = " << world.time << " s), particle ";
             if (!world.health.finite)
-                m << world.health.firstNonFinite << ": position or velocity is not finite (NaN or infinity)";
+                m << id(world.health.firstNonFinite)
+                  << ": position or velocity is not finite (NaN or infinity)";
             else
-                m << world.health.worstParticle << ": overlap is " << world.health.maxOverlapRatio
+                m << id(world.health.worstParticle) << ": overlap is " << world.health.maxOverlapRatio
                   << " of the radius (limit max_overlap_fraction = " << scene.maxOverlapFraction
                   << "): the time step is too large for the stiffness or the particles are too fast";
             m << "; the " << recorder.framesWritten() << " outputs written so far are in "

@@ -497,7 +497,15 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         world.neighbors.skin = 0.2 * largest;
     }
     checkSphereRanges(world, scene.dt, file);
-    scene.vtkFormat = chooseVtkFormat(vtkFormat, world.particles.size());
+    double expected = double(world.particles.size()); // with those the inserters are due to add
+    for (const dem::Inserter& in : scene.flow.inserters)
+        expected += in.mode == dem::Inserter::Mode::Count ? in.count
+                    : in.mode == dem::Inserter::Mode::Rate
+                        ? in.rate * std::fmax(0.0, std::fmin(in.until, scene.duration) - in.from)
+                        : 0.0;
+    if (!scene.flow.inserters.empty())
+        checkSphereCount(expected, "the spheres and those the [[insert]] tables add", file);
+    scene.vtkFormat = chooseVtkFormat(vtkFormat, static_cast<std::size_t>(std::fmin(expected, 1e12)));
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
     checkInitialOverlaps(world, overlapTolerance); // also builds the pair table
