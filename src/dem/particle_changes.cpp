@@ -7,6 +7,21 @@
 namespace veridem::dem
 {
 
+// (declared in world.h)
+void refreshFixedParticles(World& world)
+{
+    const ParticleStore& p = world.particles;
+    world.fixedIndex.clear();
+    world.fixedHome.clear();
+    for (std::size_t i = 0; i < p.fixed.size(); ++i)
+        if (p.fixed[i])
+        {
+            world.fixedIndex.push_back(static_cast<std::uint32_t>(i));
+            world.fixedHome.push_back(p.position[i]);
+        }
+    world.neighbors.anyFixed = !world.fixedIndex.empty();
+}
+
 void removeParticles(World& world, std::vector<std::uint32_t> doomed)
 {
     if (doomed.empty())

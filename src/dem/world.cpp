@@ -14,7 +14,8 @@
 //
 // The dashpots and the tangential-spring increment use the half-step velocities: the spring
 // increment vt dt is then exactly the relative displacement over [t, t+dt]. Output never happens
-// here; the driver records the world between steps.
+// here; the driver records the world between steps. Frozen particles (World::fixedIndex) are put
+// back at rest after the kick-drift and after the kick (holdFixedParticles).
 //
 // Two fused paths run these stages with the same operations and bits, each kept because it pays
 // (figures in docs/performance.md; Execution::fusedSteps = false turns both off to measure them): a
@@ -399,20 +400,6 @@ void prepare(World& world)
     computeForces(world, 0.0);
 }
 
-void refreshFixedParticles(World& world)
-{
-    const ParticleStore& p = world.particles;
-    world.fixedIndex.clear();
-    world.fixedHome.clear();
-    for (std::size_t i = 0; i < p.fixed.size(); ++i)
-        if (p.fixed[i])
-        {
-            world.fixedIndex.push_back(static_cast<std::uint32_t>(i));
-            world.fixedHome.push_back(p.position[i]);
-        }
-    world.neighbors.anyFixed = !world.fixedIndex.empty();
-}
-
 void rebuildAfterParticleChange(World& world)
 {
     refreshFixedParticles(world);
@@ -434,14 +421,12 @@ void step(World& world, Real dt)
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
                   lanes);
-    if (!world.fixedIndex.empty()) [[unlikely]] // frozen particles: back in place, at rest
-    {
+    const bool anyFixed = !world.fixedIndex.empty();
+    if (anyFixed) [[unlikely]] // frozen particles: back in place, at rest (after the kick too)
         holdFixedParticles(world);
-        stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
+    stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
+    if (anyFixed) [[unlikely]]
         holdFixedParticles(world);
-    }
-    else
-        stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
     if (world.observer) [[unlikely]]
         world.observer->afterStep(world, dt);
 }

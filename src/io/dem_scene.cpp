@@ -484,27 +484,9 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     if (world.particles.size() == 0 && scene.flow.inserters.empty())
         throw InputError(
             file + ": the scene has no particles ([[sphere]], [[particles]], [[lattice]] or [[insert]])");
-    if (scene.measurements.energy && !scene.flow.empty())
-        throw InputError(file + ": [output] energy = true cannot be combined with [[insert]] or [[outlet]] "
-                                "(the energy ledger assumes a fixed set of particles)");
-    scene.flow.nextId = static_cast<std::uint32_t>(world.particles.size());
-    if (!scene.flow.inserters.empty() && world.neighbors.skin <= 0)
-    {
-        // The default skin of prepare() from the radii to come (the scene may start empty).
-        Real largest = scene.flow.largestRadius();
-        for (const Real r : world.particles.radius)
-            largest = std::max(largest, r);
-        world.neighbors.skin = 0.2 * largest;
-    }
+    startParticleFlow(scene.flow, world, scene.measurements.energy, file);
     checkSphereRanges(world, scene.dt, file);
-    double expected = double(world.particles.size()); // with those the inserters are due to add
-    for (const dem::Inserter& in : scene.flow.inserters)
-        expected += in.mode == dem::Inserter::Mode::Count ? in.count
-                    : in.mode == dem::Inserter::Mode::Rate
-                        ? in.rate * std::fmax(0.0, std::fmin(in.until, scene.duration) - in.from)
-                        : 0.0;
-    if (!scene.flow.inserters.empty())
-        checkSphereCount(expected, "the spheres and those the [[insert]] tables add", file);
+    const double expected = expectedParticles(scene.flow, world, scene.duration, file);
     scene.vtkFormat = chooseVtkFormat(vtkFormat, static_cast<std::size_t>(std::fmin(expected, 1e12)));
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);

@@ -1,5 +1,8 @@
 #include "io/particle_flow_keys.h"
 
+#include "core/error.h"
+#include "io/scene_limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -222,6 +225,36 @@ dem::ParticleFlow readParticleFlow(TableReader& top, const dem::World& world, st
         flow.outlets.push_back(std::move(o));
     }
     return flow;
+}
+
+void startParticleFlow(dem::ParticleFlow& flow, dem::World& world, bool energy, const std::string& file)
+{
+    if (energy && !flow.empty())
+        throw InputError(file + ": [output] energy = true cannot be combined with [[insert]] or [[outlet]] "
+                                "(the energy ledger assumes a fixed set of particles)");
+    flow.nextId = static_cast<std::uint32_t>(world.particles.size());
+    if (flow.inserters.empty() || world.neighbors.skin > 0)
+        return;
+    Real largest = flow.largestRadius();
+    for (const Real r : world.particles.radius)
+        largest = std::max(largest, r);
+    world.neighbors.skin = 0.2 * largest;
+}
+
+double expectedParticles(const dem::ParticleFlow& flow, const dem::World& world, Real duration,
+                         const std::string& file)
+{
+    double count = double(world.particles.size());
+    if (flow.inserters.empty())
+        return count;
+    for (const dem::Inserter& in : flow.inserters)
+        count += in.mode == dem::Inserter::Mode::Count ? in.count
+                 : in.mode == dem::Inserter::Mode::Rate
+                     ? in.rate * std::fmax(0.0, std::fmin(in.until, duration) - in.from)
+                     : 0.0;
+    // (a mass rate's count is not known before the radii are drawn)
+    checkSphereCount(count, "the spheres and those the [[insert]] tables add", file);
+    return count;
 }
 
 dem::World timeStepProbe(const dem::World& world, const dem::ParticleFlow& flow)
