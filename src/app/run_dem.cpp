@@ -8,6 +8,8 @@
 #include "io/contact_output.h"
 #include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
+#include "io/outlet_output.h"
+#include "io/particle_flow_keys.h"
 #include "io/particle_output.h"
 #include "io/region_output.h"
 #include "io/run_control.h"
@@ -30,7 +32,10 @@ namespace
 
 void checkTimeStep(const io::DemScene& scene, const RunOptions& options)
 {
-    const dem::TimeStepEstimate estimate = dem::estimateTimeStep(scene.world, scene.characteristicSpeed);
+    const dem::TimeStepEstimate estimate =
+        scene.flow.inserters.empty()
+            ? dem::estimateTimeStep(scene.world, scene.characteristicSpeed)
+            : dem::estimateTimeStep(io::timeStepProbe(scene.world, scene.flow), scene.characteristicSpeed);
     std::fprintf(stderr,
                  "veridem: dt = %.4g s; stability limit %.4g s (%s); shortest contact time %.4g s, "
                  "recommended dt <= tc/50 = %.4g s\n",
@@ -138,13 +143,18 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     const io::MeasurementOptions& measure = scene.measurements;
     dem::EnergyLedger ledger; // with `[output] energy = true`: world.observer
     dem::EnergyLedgerState* const ledgerState = measure.energy ? &ledger.state : nullptr;
-    // particles.csv, thermo.csv, region.csv (if measured), walls.csv (if there are walls)
+    // particles.csv, thermo.csv, region.csv (if measured), walls.csv (if there are walls),
+    // outlets.csv (if there are outlets), in this order in the checkpoint
     const bool wallLoads = !world.walls.empty();
-    const std::size_t outputFiles = (measure.region ? 3 : 2) + (wallLoads ? 1 : 0);
+    dem::ParticleFlow& flow = scene.flow;
+    const bool outlets = !flow.outlets.empty();
+    const std::size_t outputFiles =
+        2 + std::size_t(measure.region) + std::size_t(wallLoads) + std::size_t(outlets);
+    std::optional<std::uint64_t> outletBytes;
     if (!options.restartFile.empty())
     {
         const io::CheckpointOutputs saved =
-            io::readDemCheckpoint(options.restartFile, world, sceneHash, ledgerState);
+            io::readDemCheckpoint(options.restartFile, world, sceneHash, ledgerState, &flow);
         if (saved.fileBytes.size() != outputFiles)
             throw InputError("checkpoint '" + options.restartFile + "' is corrupt: it records " +
                              std::to_string(saved.fileBytes.size()) + " output files, this run has " +
@@ -154,7 +164,9 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (measure.region)
             regionBytes = saved.fileBytes[2];
         if (wallLoads)
-            wallBytes = saved.fileBytes.back();
+            wallBytes = saved.fileBytes[2 + std::size_t(measure.region)];
+        if (outlets)
+            outletBytes = saved.fileBytes.back();
         if (world.stepCount > totalSteps)
             throw InputError("checkpoint '" + options.restartFile + "' is at step " +
                              std::to_string(world.stepCount) + ", after the scene's last step " +
@@ -164,7 +176,11 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                      world.time);
     }
     else
+    {
         dem::prepare(world);
+        if (!flow.empty())
+            flow.apply(world, scene.dt); // (step 0 is a flow step)
+    }
     world.wallContacts.setRecordLoads(wallLoads);
     if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
         throw InputError("--stop-at-step " + std::to_string(*options.stopAtStep) +
@@ -189,6 +205,9 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     std::optional<io::WallLoadRecorder> walls;
     if (wallLoads)
         walls.emplace(options.outDir, wallBytes);
+    std::optional<io::OutletRecorder> outletRecorder;
+    if (outlets)
+        outletRecorder.emplace(options.outDir, outletBytes);
     const auto recordOutputs = [&]
     {
         recorder.record(world);
@@ -200,6 +219,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             region->record(world, now);
         if (walls)
             walls->record(world);
+        if (outletRecorder)
+            outletRecorder->record(world.time, flow.outlets);
     };
     const auto closeOutputs = [&]
     {
@@ -209,6 +230,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             region->close();
         if (walls)
             walls->close();
+        if (outletRecorder)
+            outletRecorder->close();
     };
     if (!resume)
         recordOutputs();
@@ -220,8 +243,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             bytes.push_back(region->size());
         if (walls)
             bytes.push_back(walls->size());
+        if (outletRecorder)
+            bytes.push_back(outletRecorder->size());
         io::writeDemCheckpoint(checkpointPath, world, sceneHash, {recorder.frameTimes(), bytes, 0},
-                               ledgerState);
+                               ledgerState, &flow);
     };
     io::stopOnSignals();
 
@@ -241,17 +266,23 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             runEnd = std::min(runEnd, (s / checkpointEvery + 1) * checkpointEvery);
         if (options.stopAtStep)
             runEnd = std::min(runEnd, *options.stopAtStep);
+        if (!flow.empty()) // particles come and go between runs of steps
+            runEnd = std::min(runEnd, (s / flow.everySteps + 1) * flow.everySteps);
         const auto runStart = std::chrono::steady_clock::now();
         const std::uint64_t done = dem::advance(world, scene.dt, runEnd - s, scene.maxOverlapFraction);
         s += done;
         if (s < runEnd || !world.health.finite || world.health.maxOverlapRatio > scene.maxOverlapFraction)
         {
             std::ostringstream m;
+            // (particles named by their stable id, as in the output)
+            const auto id = [&](std::uint32_t i)
+            { return i < world.particles.size() ? world.particles.id[i] : i; };
             m << "step " << world.stepCount << " (t = " << world.time << " s), particle ";
             if (!world.health.finite)
-                m << world.health.firstNonFinite << ": position or velocity is not finite (NaN or infinity)";
+                m << id(world.health.firstNonFinite)
+                  << ": position or velocity is not finite (NaN or infinity)";
             else
-                m << world.health.worstParticle << ": overlap is " << world.health.maxOverlapRatio
+                m << id(world.health.worstParticle) << ": overlap is " << world.health.maxOverlapRatio
                   << " of the radius (limit max_overlap_fraction = " << scene.maxOverlapFraction
                   << "): the time step is too large for the stiffness or the particles are too fast";
             m << "; the " << recorder.framesWritten() << " outputs written so far are in "
@@ -264,6 +295,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             chunk *= 2;
         else if (runSeconds > 0.05 && chunk > 1)
             chunk /= 2;
+        if (!flow.empty() && s % flow.everySteps == 0)
+            flow.apply(world, scene.dt);
         if (s % outputEvery == 0 || s == totalSteps)
             recordOutputs();
         bool checkpointed = false;

@@ -89,7 +89,11 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
         const ContactFrameOf<Real> f =
             pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
                                    p.angularVelocity[i], p.angularVelocity[j]);
-        const ContactInput in = pairContactInput(p, i, j, f, p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]));
+        // m* as the force stage takes it (NeighborList::activeMass; a frozen particle's is infinite)
+        const Real effectiveMass = p.fixed[i]   ? p.mass[j]
+                                   : p.fixed[j] ? p.mass[i]
+                                                : p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+        const ContactInput in = pairContactInput(p, i, j, f, effectiveMass);
         const Real leverI = f.leverI, leverJ = f.leverJ;
         const std::size_t a = list.candidateOfSlot(k);
         ContactHistory history = // a copy: the world keeps its own

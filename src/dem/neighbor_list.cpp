@@ -83,6 +83,16 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles, ContactHis
         activeMass[a] = mass[i] * mass[j] / (mass[i] + mass[j]);
         activeDeferred[a] = deferredIndex[k];
     }
+    if (anyFixed) [[unlikely]] // a frozen particle's mass is infinite: m* is the other's
+    {
+        const std::uint8_t* const fixed = particles.fixed.data();
+        for (std::size_t a = 0; a < count; ++a)
+        {
+            const std::uint32_t i = activeFirst[a], j = activeSecond[a];
+            if (fixed[i] || fixed[j])
+                activeMass[a] = fixed[i] ? mass[j] : mass[i];
+        }
+    }
     slotsRebuilt_ = false;
 }
 
@@ -139,6 +149,58 @@ void NeighborList::forgetCandidates(ContactHistoryStore& history)
     history.clear();
 }
 
+void NeighborList::renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history)
+{
+    // Each kept candidate with its new key and its old entry, sorted by the new key.
+    struct Renamed
+    {
+        std::uint64_t key;
+        std::uint32_t from;
+        bool flipped;
+    };
+    std::vector<Renamed> kept;
+    kept.reserve(activeFirst.size());
+    for (std::size_t a = 0; a < activeFirst.size(); ++a)
+    {
+        const std::uint32_t i = newIndex[activeFirst[a]], j = newIndex[activeSecond[a]];
+        if (i == kGone || j == kGone)
+            continue;
+        kept.push_back({i < j ? pairKey(i, j) : pairKey(j, i), static_cast<std::uint32_t>(a), i > j});
+    }
+    std::sort(kept.begin(), kept.end(), [](const Renamed& a, const Renamed& b) { return a.key < b.key; });
+    ContactHistoryStore renamed(history.keepFormed);
+    renamed.keepRolling = history.keepRolling;
+    const bool rolling = history.keepRolling && history.rolling.size() == history.spring.size();
+    const bool formed = history.keepFormed && history.formed.size() == history.spring.size();
+    std::vector<std::uint32_t> newFirst(kept.size()), newSecond(kept.size());
+    renamed.spring.resize(kept.size());
+    if (history.keepRolling)
+        renamed.rolling.resize(kept.size());
+    if (history.keepFormed)
+        renamed.formed.resize(kept.size());
+    for (std::size_t a = 0; a < kept.size(); ++a)
+    {
+        const Renamed& k = kept[a];
+        newFirst[a] = static_cast<std::uint32_t>(k.key >> 32);
+        newSecond[a] = static_cast<std::uint32_t>(k.key);
+        // (j, i) instead of (i, j): the relative motion, and so each spring, changes sign.
+        const Real sign = k.flipped ? -1.0 : 1.0;
+        renamed.spring[a] = sign * history.spring[k.from];
+        if (rolling)
+            renamed.rolling[a] = sign * history.rolling[k.from];
+        if (formed)
+            renamed.formed[a] = history.formed[k.from];
+    }
+    activeFirst.swap(newFirst);
+    activeSecond.swap(newSecond);
+    history = std::move(renamed);
+    // The slots name old particles: the rebuild that follows matches the candidates by (i, j).
+    first.clear();
+    second.clear();
+    positionAtBuild_.clear();
+    positionAtActiveBuild_.clear();
+}
+
 std::size_t NeighborList::candidateOfSlot(std::size_t k) const
 {
     const std::uint64_t wanted = pairKey(first[k], second[k]);
@@ -179,6 +241,8 @@ void NeighborList::rebuild(const ParticleStore& particles, ContactHistoryStore& 
     activeStale_ = true; // new slots: the sub-list is rebuilt by the next force evaluation
     const std::size_t n = particles.size();
     positionAtBuild_.assign(particles.position.begin(), particles.position.end());
+    if (positionAtActiveBuild_.size() != n) // (particles were inserted: the sub-list is stale)
+        positionAtActiveBuild_.clear();
     firstStart.assign(n + 1, 0);
     incomingStart.assign(n + 1, 0);
     if (n == 0)

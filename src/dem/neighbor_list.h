@@ -46,6 +46,9 @@ class NeighborList
     // for every other model). Pairs within r_i + r_j + reach are passed to the contact law, which
     // decides whether they are formed, and the lists search that much farther.
     Real reach = 0;
+    // Some particle is frozen (ParticleStore::fixed; set by refreshFixedParticles): a candidate
+    // with one takes the other's mass as m* (the frozen one's mass is infinite in its contacts).
+    bool anyFixed = false;
     std::vector<std::uint32_t> first;  // i of each pair (sorted, i < j)
     std::vector<std::uint32_t> second; // j of each pair
 
@@ -113,6 +116,13 @@ class NeighborList
     /// Rebuilds the pair slots; the history reaches the next sub-list by (i, j) (with no slots
     /// at all, `history` is emptied).
     void rebuild(const ParticleStore& particles, ContactHistoryStore& history);
+
+    /// Renames the particles after some were removed between steps (dem/particle_changes.h):
+    /// particle p is now newIndex[p], or gone if kGone. The candidates keep their history under
+    /// the new (i, j) (a pair whose order flips has its springs negated); the next rebuild(),
+    /// which must follow, carries it by key.
+    static constexpr std::uint32_t kGone = 0xffffffffu;
+    void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
 
     /// The candidate of slot k (its entry in the history store), or kNotCandidate if it is not
     /// one (then it is open). A look-up by (i, j), for tests and output, not the force loop.

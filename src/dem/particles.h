@@ -43,6 +43,13 @@ struct ParticleStore
     std::vector<Real> invMass;    // [1/kg]
     std::vector<Real> invInertia; // 1/I with I = (2/5) m r^2 (solid sphere) [1/(kg m^2)]
     std::vector<std::uint32_t> material;
+    // Stable id of each particle (output key): a particle keeps it when others are removed or
+    // inserted and when the store is renumbered (spatial_sort.h). The scene's particles are
+    // numbered from 0 in input order; inserted ones continue (dem/particle_flow.h).
+    std::vector<std::uint32_t> id;
+    // 1 for a frozen particle (`fixed = true`): it keeps its position with zero velocity and
+    // angular velocity, and is a partner of infinite mass in its pair contacts (world.h).
+    std::vector<std::uint8_t> fixed;
     // Position [m] and radius [m] of each particle in one padded row (x, y, z, r): a copy that
     // prepare() fills and every drift (integrate.h) rewrites with the new positions, so that the
     // pair stage's distance test loads a particle with one 32-byte load.
@@ -79,6 +86,8 @@ struct ParticleStore
         invMass.push_back(1.0 / m);
         invInertia.push_back(1.0 / (0.4 * m * r * r));
         material.push_back(materialId);
+        id.push_back(static_cast<std::uint32_t>(id.size()));
+        fixed.push_back(0);
         positionRadius.push_back(positionRadiusRow(position.size() - 1));
         return static_cast<std::uint32_t>(position.size() - 1);
     }
@@ -92,7 +101,45 @@ struct ParticleStore
         for (auto* a : {&radius, &mass, &invMass, &invInertia})
             a->reserve(n);
         material.reserve(n);
+        id.reserve(n);
+        fixed.reserve(n);
         positionRadius.reserve(n);
+    }
+
+    /// Removes particle i by moving the last particle into its place (every array, its force and
+    /// torque rows included); the caller re-keys the contact lists (dem/particle_changes.h).
+    void swapRemove(std::size_t i)
+    {
+        const std::size_t last = size() - 1;
+        if (i != last)
+        {
+            position[i] = position[last];
+            velocity[i] = velocity[last];
+            angularVelocity[i] = angularVelocity[last];
+            force[i] = force[last];
+            torque[i] = torque[last];
+            radius[i] = radius[last];
+            mass[i] = mass[last];
+            invMass[i] = invMass[last];
+            invInertia[i] = invInertia[last];
+            material[i] = material[last];
+            id[i] = id[last];
+            fixed[i] = fixed[last];
+            positionRadius[i] = positionRadius[last];
+        }
+        position.pop_back();
+        velocity.pop_back();
+        angularVelocity.pop_back();
+        force.pop_back();
+        torque.pop_back();
+        radius.pop_back();
+        mass.pop_back();
+        invMass.pop_back();
+        invInertia.pop_back();
+        material.pop_back();
+        id.pop_back();
+        fixed.pop_back();
+        positionRadius.pop_back();
     }
 };
 

@@ -78,6 +78,8 @@ std::vector<std::uint32_t> sortParticlesSpatially(World& world, Real cellSize)
     permute(p.invMass, order);
     permute(p.invInertia, order);
     permute(p.material, order);
+    permute(p.id, order);
+    permute(p.fixed, order);
     return order;
 }
 

@@ -112,6 +112,37 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
         start[i + 1] += start[i];
 }
 
+void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex,
+                                      ContactHistoryStore& history)
+{
+    constexpr std::uint32_t kGone = 0xffffffffu;               // (NeighborList::kGone)
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> kept; // new (particle, wall) key, old slot
+    kept.reserve(particle.size());
+    for (std::size_t k = 0; k < particle.size(); ++k)
+        if (const std::uint32_t p = newIndex[particle[k]]; p != kGone)
+            kept.push_back({(std::uint64_t(p) << 32) | wall[k], static_cast<std::uint32_t>(k)});
+    std::sort(kept.begin(), kept.end());
+    ContactHistoryStore renamed(history.keepFormed);
+    renamed.keepRolling = history.keepRolling;
+    const bool rolling = history.keepRolling && history.rolling.size() == history.spring.size();
+    std::vector<std::uint32_t> newParticle(kept.size()), newWall(kept.size());
+    renamed.spring.resize(kept.size());
+    if (rolling)
+        renamed.rolling.resize(kept.size());
+    for (std::size_t k = 0; k < kept.size(); ++k)
+    {
+        newParticle[k] = static_cast<std::uint32_t>(kept[k].first >> 32);
+        newWall[k] = static_cast<std::uint32_t>(kept[k].first);
+        renamed.spring[k] = history.spring[kept[k].second];
+        if (rolling)
+            renamed.rolling[k] = history.rolling[kept[k].second];
+    }
+    particle.swap(newParticle);
+    wall.swap(newWall);
+    history = std::move(renamed);
+    start.clear();
+}
+
 std::size_t WallContactList::slotOf(std::uint32_t particleIndex, std::uint32_t wallIndex) const
 {
     for (std::size_t k = 0; k < particle.size(); ++k)

@@ -38,6 +38,11 @@ class WallContactList
     void rebuild(const ParticleStore& particles, const std::vector<Wall>& walls, Real skin,
                  ContactHistoryStore& history);
 
+    /// Renames the particles after some were removed between steps (dem/particle_changes.h):
+    /// particle p is now newIndex[p], or gone if NeighborList::kGone. The slots keep their history
+    /// under the new (particle, wall), sorted again; the rebuild() that must follow carries it.
+    void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
+
     /// The slot of the contact (particle, wall) (its entry in the wall history), e.g. to start a
     /// case in a loaded contact state after prepare(). Throws InputError if the particle is not
     /// near that wall.

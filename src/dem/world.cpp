@@ -14,7 +14,8 @@
 //
 // The dashpots and the tangential-spring increment use the half-step velocities: the spring
 // increment vt dt is then exactly the relative displacement over [t, t+dt]. Output never happens
-// here; the driver records the world between steps.
+// here; the driver records the world between steps. Frozen particles (World::fixedIndex) are put
+// back at rest after the kick-drift and after the kick (holdFixedParticles).
 //
 // Two fused paths run these stages with the same operations and bits, each kept because it pays
 // (figures in docs/performance.md; Execution::fusedSteps = false turns both off to measure them): a
@@ -97,6 +98,21 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
 {
     world.neighbors.rebuild(world.particles, world.pairHistory);
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
+}
+
+/// Holds the frozen particles: back to their positions (and position rows) with zero velocity and
+/// angular velocity, undoing what a kick or drift gave them (gravity, contact forces).
+[[gnu::noinline]] void holdFixedParticles(World& world)
+{
+    ParticleStore& p = world.particles;
+    for (std::size_t k = 0; k < world.fixedIndex.size(); ++k)
+    {
+        const std::uint32_t i = world.fixedIndex[k];
+        p.position[i] = world.fixedHome[k];
+        p.positionRadius[i] = p.positionRadiusRow(i);
+        p.velocity[i] = Vec3{};
+        p.angularVelocity[i] = Vec3{};
+    }
 }
 
 /// Particles per sub-pass of stage 4: their forces, torques, velocities and wall contacts
@@ -377,10 +393,18 @@ void prepare(World& world)
     world.pairHistory.keepRolling = rollingHistory;
     world.wallHistory.keepRolling = rollingHistory;
     world.neighbors.reach = pairTouchReach(world);
+    refreshFixedParticles(world);
     rebuildContactLists(world);
     world.particles.refreshPositionRadius();
     world.prepared = true;
     computeForces(world, 0.0);
+}
+
+void rebuildAfterParticleChange(World& world)
+{
+    refreshFixedParticles(world);
+    world.neighbors.reach = pairTouchReach(world);
+    rebuildContactLists(world);
 }
 
 void step(World& world, Real dt)
@@ -389,7 +413,7 @@ void step(World& world, Real dt)
         prepare(world);
 
     if (world.particles.size() == 1 && world.exec.fusedSteps && !world.exec.profile.enabled &&
-        !world.observer)
+        !world.observer && world.fixedIndex.empty())
         return stepOneParticle(world, dt); // the stages below, the ball's state in registers
 
     StageClock clock(world.exec.profile);
@@ -397,7 +421,12 @@ void step(World& world, Real dt)
     const Motion moved = // v(t+dt/2), x(t+dt), and how far x moved since the lists were built
         kickDrift(world.particles, world.gravity, dt, world.neighbors.motionReference(world.particles.size()),
                   lanes);
+    const bool anyFixed = !world.fixedIndex.empty();
+    if (anyFixed) [[unlikely]] // frozen particles: back in place, at rest (after the kick too)
+        holdFixedParticles(world);
     stepAfterKickDrift(world, dt, moved, lanes, false, false, clock);
+    if (anyFixed) [[unlikely]]
+        holdFixedParticles(world);
     if (world.observer) [[unlikely]]
         world.observer->afterStep(world, dt);
 }
@@ -408,9 +437,9 @@ std::uint64_t advance(World& world, Real dt, std::uint64_t steps, Real maxOverla
         prepare(world);
     const auto failed = [&]
     { return !world.health.finite || world.health.maxOverlapRatio > maxOverlapRatio; };
-    if (world.particles.size() <= 1 || world.observer ||
-        !world.exec.fusedSteps) // (one ball has its own step,
-                                // with nothing to fuse; an observer sees every step's end)
+    if (world.particles.size() <= 1 || world.observer || !world.exec.fusedSteps ||
+        !world.fixedIndex.empty()) // (one ball has its own step, with nothing to fuse; an observer
+                                   // sees every step's end; frozen particles are held after each)
     {
         for (std::uint64_t s = 0; s < steps; ++s)
         {

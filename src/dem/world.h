@@ -161,6 +161,10 @@ struct World
     // pairHistory is touching candidate a's, entry k of wallHistory wall slot k's.
     ContactHistoryStore pairHistory{true};
     ContactHistoryStore wallHistory;
+    // The frozen particles (ParticleStore::fixed) by index, and where they are held [m]; filled by
+    // refreshFixedParticles(). Empty: the step runs exactly as it would without the feature.
+    std::vector<std::uint32_t> fixedIndex;
+    std::vector<Vec3> fixedHome;
     Vec3 gravity{0, 0, -9.81}; // [m/s^2]
     Real time = 0;             // [s]
     std::uint64_t stepCount = 0;
@@ -177,6 +181,16 @@ struct World
 /// Mixes the pair table, builds the neighbour list and computes the initial forces. Called by the
 /// first step() if not called before; call again after adding particles, walls or materials.
 void prepare(World& world);
+
+/// Lists the frozen particles (World::fixedIndex, fixedHome) from ParticleStore::fixed and the
+/// current positions, and tells the neighbour list whether a pair may have one (prepare(), a
+/// checkpoint restore, particlesChanged()).
+void refreshFixedParticles(World& world);
+
+/// After particles were added or removed between steps (dem/particle_changes.h): the frozen
+/// particles listed again, the touch reach for the materials now present, and both contact lists
+/// rebuilt (their history carried by key).
+void rebuildAfterParticleChange(World& world);
 
 /// Advances the world by dt [s] with velocity Verlet (see world.cpp for the stages).
 void step(World& world, Real dt);

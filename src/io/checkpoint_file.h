@@ -26,8 +26,9 @@
 namespace veridem::io
 {
 
-inline constexpr std::uint32_t kCheckpointVersion = 3; // 2: the 3D energy ledger records (enLg, enSt); 3: its
-                                                     // adhesion dissipation
+inline constexpr std::uint32_t kCheckpointVersion = 4; // 2: the 3D energy ledger records (enLg, enSt); 3: its
+                                                       // adhesion dissipation; 4: particle ids and frozen
+                                                       // flags, inserter and outlet state (pId, pFix, fl*)
 
 enum class CheckpointEngine : std::uint32_t
 {

@@ -55,8 +55,8 @@ void ContactRecorder::record(const dem::World& world, const std::vector<dem::Con
         connectivity[2 * c] = static_cast<std::int64_t>(2 * c);
         connectivity[2 * c + 1] = static_cast<std::int64_t>(2 * c + 1);
         offsets[c] = static_cast<std::int64_t>(2 * c + 2);
-        ids[2 * c] = contacts[c].i;
-        ids[2 * c + 1] = contacts[c].partner;
+        ids[2 * c] = world.particles.id[contacts[c].i]; // (stable ids; a wall by its index)
+        ids[2 * c + 1] = contacts[c].wall ? contacts[c].partner : world.particles.id[contacts[c].partner];
         wall[c] = contacts[c].wall ? 1 : 0;
     }
     arrays.int64(out, "connectivity", 1, connectivity.data(), 2 * n);

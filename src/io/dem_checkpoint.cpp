@@ -126,14 +126,19 @@ struct CheckpointAccess
                       std::size_t particles)
     {
         const std::size_t slots = n.first.size(), entries = n.deferred.size(),
-                          candidates = n.activeSlots.size();
+                          candidates = n.activeFirst.size();
+        // Between a rebuild of the slots and the next force stage (particles inserted or removed
+        // between steps: world.h, rebuildAfterParticleChange) the candidates keep only their keys
+        // and history; the rest of their record is made by the next sub-list rebuild.
+        const bool pending = n.slotsRebuilt_ && n.activeStale_ && n.activeSlots.empty() &&
+                             n.activeMass.empty() && n.activeDeferred.empty();
         bool ok = n.second.size() == slots && n.deferredIndex.size() == slots &&
                   n.firstStart.size() == particles + 1 && n.incomingStart.size() == particles + 1 &&
-                  n.incomingEntry.size() == entries && n.activeFirst.size() == candidates &&
-                  n.activeSecond.size() == candidates && h.spring.size() == candidates &&
-                  (h.rolling.empty() || h.rolling.size() == candidates) &&
+                  n.incomingEntry.size() == entries && n.activeSecond.size() == candidates &&
+                  h.spring.size() == candidates && (h.rolling.empty() || h.rolling.size() == candidates) &&
                   (!h.keepRolling || h.rolling.size() == candidates) && h.formed.size() == candidates &&
-                  n.activeMass.size() == candidates && n.activeDeferred.size() == candidates &&
+                  (pending || (n.activeSlots.size() == candidates && n.activeMass.size() == candidates &&
+                               n.activeDeferred.size() == candidates)) &&
                   (n.positionAtBuild_.empty() || n.positionAtBuild_.size() == particles) &&
                   (n.positionAtActiveBuild_.empty() || n.positionAtActiveBuild_.size() == particles);
         ok = ok && below(n.first, particles) && below(n.second, particles) &&
@@ -203,10 +208,39 @@ void setLedgerValues(dem::EnergyLedgerState& s, const std::vector<Real>& v)
     s.adhesion = v[15];
 }
 
+/// The inserters' and outlets' state as arrays (the file's order).
+struct FlowRecords
+{
+    std::vector<std::uint64_t> random, inserted, removed;
+    std::vector<Real> insertedMass, removedMass;
+    std::vector<std::uint8_t> warned;
+};
+
+FlowRecords flowRecords(const dem::ParticleFlow* flow)
+{
+    FlowRecords r;
+    if (!flow)
+        return r;
+    for (const dem::Inserter& in : flow->inserters)
+    {
+        r.random.insert(r.random.end(), in.random.state.begin(), in.random.state.end());
+        r.inserted.push_back(in.inserted);
+        r.insertedMass.push_back(in.insertedMass);
+        r.warned.push_back(in.warnedFull);
+    }
+    for (const dem::Outlet& o : flow->outlets)
+    {
+        r.removed.push_back(o.count);
+        r.removedMass.push_back(o.mass);
+    }
+    return r;
+}
+
 } // namespace
 
 void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& world, std::uint64_t sceneHash,
-                        const CheckpointOutputs& outputs, const dem::EnergyLedgerState* ledger)
+                        const CheckpointOutputs& outputs, const dem::EnergyLedgerState* ledger,
+                        const dem::ParticleFlow* flow)
 {
     CheckpointWriter out(path, CheckpointEngine::Dem3d, sceneHash);
     out.value("time", world.time);
@@ -230,6 +264,16 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
     out.array("pIMa", p.invMass);
     out.array("pIIn", p.invInertia);
     out.array("pMat", p.material);
+    out.array("pId ", p.id);
+    out.array("pFix", p.fixed);
+    const FlowRecords f = flowRecords(flow);
+    out.value("flNx", flow ? flow->nextId : std::uint32_t(p.size()));
+    out.array("flRn", f.random);
+    out.array("flIc", f.inserted);
+    out.array("flIm", f.insertedMass);
+    out.array("flWa", f.warned);
+    out.array("flOc", f.removed);
+    out.array("flOm", f.removedMass);
 
     std::vector<Vec3> displacement, velocity, angularVelocity;
     std::vector<Real> clock;
@@ -255,7 +299,8 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
 }
 
 CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::World& world,
-                                    std::uint64_t sceneHash, dem::EnergyLedgerState* ledger)
+                                    std::uint64_t sceneHash, dem::EnergyLedgerState* ledger,
+                                    dem::ParticleFlow* flow)
 {
     CheckpointReader in(path, CheckpointEngine::Dem3d, sceneHash);
     in.value("time", world.time);
@@ -269,8 +314,12 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
     in.value("hNon", h.firstNonFinite);
 
     dem::ParticleStore& p = world.particles;
-    const std::size_t n = p.size();
-    readSized(in, "pPos", p.position, n);
+    // The checkpoint's particle count (inserters and outlets change the scene's).
+    in.array("pPos", p.position);
+    const std::size_t n = p.position.size();
+    if (n != world.particles.id.size() && (!flow || flow->empty()))
+        in.fail("has " + std::to_string(n) + " particles, the scene " + std::to_string(p.id.size()) +
+                " (was a particle file changed?)");
     readSized(in, "pVel", p.velocity, n);
     readSized(in, "pAng", p.angularVelocity, n);
     readSized(in, "pFor", p.force, n);
@@ -280,6 +329,36 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
     readSized(in, "pIMa", p.invMass, n);
     readSized(in, "pIIn", p.invInertia, n);
     readSized(in, "pMat", p.material, n);
+    readSized(in, "pId ", p.id, n);
+    readSized(in, "pFix", p.fixed, n);
+    const std::size_t inserters = flow ? flow->inserters.size() : 0,
+                      outlets = flow ? flow->outlets.size() : 0;
+    FlowRecords f;
+    const auto nextId = in.value<std::uint32_t>("flNx");
+    readSized(in, "flRn", f.random, 4 * inserters);
+    readSized(in, "flIc", f.inserted, inserters);
+    readSized(in, "flIm", f.insertedMass, inserters);
+    readSized(in, "flWa", f.warned, inserters);
+    readSized(in, "flOc", f.removed, outlets);
+    readSized(in, "flOm", f.removedMass, outlets);
+    if (flow)
+    {
+        flow->nextId = nextId;
+        for (std::size_t k = 0; k < inserters; ++k)
+        {
+            dem::Inserter& i = flow->inserters[k];
+            std::copy(f.random.begin() + std::ptrdiff_t(4 * k), f.random.begin() + std::ptrdiff_t(4 * k + 4),
+                      i.random.state.begin());
+            i.inserted = f.inserted[k];
+            i.insertedMass = f.insertedMass[k];
+            i.warnedFull = f.warned[k] != 0;
+        }
+        for (std::size_t k = 0; k < outlets; ++k)
+        {
+            flow->outlets[k].count = f.removed[k];
+            flow->outlets[k].mass = f.removedMass[k];
+        }
+    }
     for (const std::uint32_t m : p.material)
         if (m >= world.materials.size())
             in.fail("is corrupt: a particle names material " + std::to_string(m));
@@ -318,6 +397,7 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
     }
     CheckpointOutputs outputs = in.outputs();
     in.finish();
+    dem::refreshFixedParticles(world);
     world.prepared = true;
     return outputs;
 }

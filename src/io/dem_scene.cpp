@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "dem/models/normal.h"
 #include "dem/walls/wall.h"
+#include "io/particle_flow_keys.h"
 #include "io/scene_limits.h"
 #include "io/toml_reader.h"
 #include "io/wall_keys.h"
@@ -208,6 +209,7 @@ void readParticleFile(TableReader& t, dem::World& world, const std::string& scen
     const Real radius = t.requiredNumber("radius");
     t.requirePositive("radius", radius, "m");
     const Vec3 velocity = t.vec3("velocity", {});
+    const bool fixed = t.boolean("fixed", false);
     t.finish();
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
@@ -239,6 +241,7 @@ void readParticleFile(TableReader& t, dem::World& world, const std::string& scen
                                  std::to_string(lineNumber) + ") and the other tables",
                              sceneFile);
         world.particles.add(x, velocity, {}, radius, world.materials[material].density, material);
+        world.particles.fixed.back() = fixed;
     }
     if (in.bad())
         throw InputError(path.string() + ": read error");
@@ -251,6 +254,7 @@ struct Lattice
     Real radius = 0, spacing = 0, jitter = 0;
     Vec3 lo{}, velocity{};
     long nx = 0, ny = 0, nz = 0;
+    bool fixed = false;
 };
 
 /// Reads a [[lattice]] table and counts its spheres (in floating point, checked against
@@ -269,6 +273,7 @@ Lattice readLattice(TableReader& t, const dem::World& world)
     if (!(l.jitter >= 0 && l.jitter <= 0.5 * (l.spacing - 2 * l.radius)))
         t.fail("jitter", "must be in [0, (spacing - 2 radius)/2] m so the spheres do not overlap");
     l.velocity = t.vec3("velocity", {});
+    l.fixed = t.boolean("fixed", false);
     t.finish();
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
         t.fail("max", "must be above 'min' in x, y and z");
@@ -316,6 +321,7 @@ void fillLattice(const Lattice& l, dem::World& world)
                        l.lo.z + l.radius + Real(k) * l.spacing};
                 x += l.jitter * Vec3{uniform(), uniform(), uniform()};
                 world.particles.add(x, l.velocity, {}, l.radius, density, l.material);
+                world.particles.fixed.back() = l.fixed;
             }
 }
 
@@ -417,6 +423,8 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     simulation->requireNonNegative("characteristic_speed", scene.characteristicSpeed, "m/s");
     scene.writeVtk = simulation->boolean("vtk", true);
     const std::string vtkFormat = simulation->choice("vtk_format", "auto", {"auto", "ascii", "binary"});
+    const Real flowInterval = simulation->number("flow_interval", 100 * scene.dt);
+    simulation->requirePositive("flow_interval", flowInterval, "s");
     simulation->finish();
     scene.measurements = readMeasurementOptions(top);
 
@@ -446,9 +454,11 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         const Vec3 w = s.vec3("angular_velocity", {});
         const std::string onWall = s.string("on_wall", "");
         const bool noSlip = s.boolean("no_slip", false);
+        const bool fixed = s.boolean("fixed", false);
         s.finish();
         const std::uint32_t i =
             world.particles.add(x, v, w, radius, world.materials[material].density, material);
+        world.particles.fixed.back() = fixed;
         maxSpeed = std::fmax(maxSpeed, length(v));
         if (!onWall.empty())
         {
@@ -478,12 +488,17 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         readParticleFile(f, world, file, latticeSpheres);
     for (const Lattice& l : lattices)
         fillLattice(l, world);
+    scene.flow =
+        readParticleFlow(top, world, std::max<std::uint64_t>(1, std::llround(flowInterval / scene.dt)));
     top.finish();
 
-    if (world.particles.size() == 0)
-        throw InputError(file + ": the scene has no particles ([[sphere]], [[particles]] or [[lattice]])");
+    if (world.particles.size() == 0 && scene.flow.inserters.empty())
+        throw InputError(
+            file + ": the scene has no particles ([[sphere]], [[particles]], [[lattice]] or [[insert]])");
+    startParticleFlow(scene.flow, world, scene.measurements.energy, file);
     checkSphereRanges(world, scene.dt, file);
-    scene.vtkFormat = chooseVtkFormat(vtkFormat, world.particles.size());
+    const double expected = expectedParticles(scene.flow, world, scene.duration, file);
+    scene.vtkFormat = chooseVtkFormat(vtkFormat, static_cast<std::size_t>(std::fmin(expected, 1e12)));
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
     checkInitialOverlaps(world, overlapTolerance); // also builds the pair table

@@ -3,6 +3,7 @@
 // name the file, the line and what was expected.
 #pragma once
 
+#include "dem/particle_flow.h"
 #include "dem/world.h"
 #include "io/measurement_keys.h"
 #include "io/vtk_xml.h"
@@ -26,6 +27,7 @@ struct DemScene
     bool writeVtk = true;
     io::VtkFormat vtkFormat = io::VtkFormat::Ascii; // vtk_format, "auto" resolved by the sphere count
     MeasurementOptions measurements;                // [output] (io/measurement_keys.h)
+    dem::ParticleFlow flow;                         // [[insert]], [[outlet]] (io/particle_flow_keys.h)
 };
 
 /// Builds the scene; `file` is used in messages and to resolve relative particle-file paths.

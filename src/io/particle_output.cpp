@@ -52,7 +52,7 @@ void ParticleRecorder::record(const dem::World& world)
         const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
         rows += time;
         rows += ',';
-        rows += std::to_string(i);
+        rows += std::to_string(p.id[i]);
         for (const Real value : {x.x, x.y, x.z, v.x, v.y, v.z, w.x, w.y, w.z})
         {
             rows += ',';
@@ -105,7 +105,7 @@ void ParticleRecorder::writeVtp(const dem::World& world, const std::filesystem::
     out << "</Points>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
     std::vector<std::int64_t> ids(n);
     for (std::size_t i = 0; i < n; ++i)
-        ids[i] = static_cast<std::int64_t>(i);
+        ids[i] = static_cast<std::int64_t>(p.id[i]);
     arrays.int64(out, "id", 1, ids.data(), n);
     arrays.float64(out, "radius", 1, p.radius.data(), n);
     arrays.float64(out, "velocity", 3, vectors(p.velocity), 3 * n);

@@ -1,7 +1,9 @@
 // Output of a DEM run, written between steps by the driver (never inside the step):
-//   DIR/particles.csv        t,id,x,y,z,vx,vy,vz,wx,wy,wz (SI units) at every output time, each
+//   DIR/particles.csv        t,id,x,y,z,vx,vy,vz,wx,wy,wz (SI units) at every output time (id: the
+//                            particle's stable id, ParticleStore::id), each
 //                            number in its shortest round-trip form (reads back to the same bits)
-//   DIR/particles_NNNNNN.vtp ParaView PolyData per output (radius, velocity, angular_velocity),
+//   DIR/particles_NNNNNN.vtp ParaView PolyData per output (id, radius, velocity, angular_velocity;
+//                            each file its own particle count),
 //                            ASCII or appended zlib-compressed binary (VtkFormat)
 //   DIR/particles.pvd        the series, rewritten under a temporary name and renamed at every
 //                            output, so it is complete at any moment (also after a kill)

@@ -296,6 +296,44 @@ std::vector<std::vector<Real>> TableReader::numberRows(std::string_view key,
     return rows;
 }
 
+std::vector<Real> TableReader::numbers(std::string_view key)
+{
+    std::vector<Real> out;
+    const toml::node* n = node(key);
+    if (!n)
+        return out;
+    const toml::array* a = n->as_array();
+    if (!a || a->empty())
+        fail(key, "must be a non-empty array of numbers");
+    for (const auto& element : *a)
+    {
+        const auto v = element.value<double>();
+        if (!v || !std::isfinite(*v))
+            fail(key, "must be an array of finite numbers");
+        out.push_back(*v);
+    }
+    return out;
+}
+
+std::vector<std::string> TableReader::strings(std::string_view key)
+{
+    std::vector<std::string> out;
+    const toml::node* n = node(key);
+    if (!n)
+        return out;
+    const toml::array* a = n->as_array();
+    if (!a || a->empty())
+        fail(key, "must be a non-empty array of strings");
+    for (const auto& element : *a)
+    {
+        const auto v = element.value<std::string>();
+        if (!v)
+            fail(key, "must be an array of strings");
+        out.push_back(*v);
+    }
+    return out;
+}
+
 Vec3 TableReader::vec3(std::string_view key, Vec3 defaultValue)
 {
     return optionalVec3(key).value_or(defaultValue);

@@ -41,6 +41,10 @@ class TableReader
     /// An array of rows of finite numbers, e.g. [[0, 1.5], [2, 3]], every row of the same length,
     /// one of `widths`; empty if the key is absent.
     std::vector<std::vector<Real>> numberRows(std::string_view key, const std::vector<std::size_t>& widths);
+    /// An array of finite numbers (empty if the key is absent).
+    std::vector<Real> numbers(std::string_view key);
+    /// An array of strings (empty if the key is absent).
+    std::vector<std::string> strings(std::string_view key);
 
     std::optional<TableReader> table(std::string_view key);
     std::vector<TableReader> arrayOfTables(std::string_view key);

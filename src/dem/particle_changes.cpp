@@ -1,0 +1,49 @@
+#include "dem/particle_changes.h"
+
+#include <algorithm>
+#include <functional>
+#include <numeric>
+
+namespace veridem::dem
+{
+
+// (declared in world.h)
+void refreshFixedParticles(World& world)
+{
+    const ParticleStore& p = world.particles;
+    world.fixedIndex.clear();
+    world.fixedHome.clear();
+    for (std::size_t i = 0; i < p.fixed.size(); ++i)
+        if (p.fixed[i])
+        {
+            world.fixedIndex.push_back(static_cast<std::uint32_t>(i));
+            world.fixedHome.push_back(p.position[i]);
+        }
+    world.neighbors.anyFixed = !world.fixedIndex.empty();
+}
+
+void removeParticles(World& world, std::vector<std::uint32_t> doomed)
+{
+    if (doomed.empty())
+        return;
+    ParticleStore& p = world.particles;
+    const std::size_t n = p.size();
+    // original[s]: the index before the removals of the particle now at slot s. From the highest
+    // index down, the last particle is never one still to be removed.
+    std::vector<std::uint32_t> original(n);
+    std::iota(original.begin(), original.end(), 0u);
+    std::sort(doomed.begin(), doomed.end(), std::greater<>());
+    for (const std::uint32_t i : doomed)
+    {
+        original[i] = original[p.size() - 1];
+        original.pop_back();
+        p.swapRemove(i);
+    }
+    std::vector<std::uint32_t> newIndex(n, NeighborList::kGone);
+    for (std::size_t s = 0; s < original.size(); ++s)
+        newIndex[original[s]] = static_cast<std::uint32_t>(s);
+    world.neighbors.renameParticles(newIndex, world.pairHistory);
+    world.wallContacts.renameParticles(newIndex, world.wallHistory);
+}
+
+} // namespace veridem::dem
