@@ -5,14 +5,17 @@
 #include "dem/models/normal.h"
 #include "dem/walls/wall.h"
 #include "io/scene_limits.h"
+#include "io/surface_mesh_reader.h"
 #include "io/toml_reader.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace veridem::io
@@ -93,11 +96,34 @@ dem::Material readMaterial(TableReader& t)
     return m;
 }
 
+/// A triangle-mesh wall: the surface from `file` (STL or Gmsh, relative to the scene's directory)
+/// times `scale`, translating at `velocity` and turning at `omega` (a vector) about
+/// `rotation_centre`. The mesh's warnings (open boundary, non-manifold edges) go to stderr.
+void readMeshWall(TableReader& t, dem::Wall& wall)
+{
+    const std::string file = t.requiredString("file");
+    const Real scale = t.number("scale", 1.0);
+    t.requirePositive("scale", scale, "");
+    const std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / file;
+    dem::MeshReport report;
+    dem::MeshShape mesh;
+    mesh.mesh = std::make_shared<const dem::TriangleMesh>(
+        dem::buildTriangleMesh(readSurfaceMesh(path.string(), scale), path.string(), report));
+    for (const std::string& warning : report.warnings)
+        std::fprintf(stderr, "veridem: warning: wall '%s': %s\n", wall.name.c_str(), warning.c_str());
+    wall.motion.velocity = t.vec3("velocity", {});
+    wall.motion.angularVelocity = t.vec3("omega", {});
+    wall.motion.rotationCentre = t.vec3("rotation_centre", {});
+    mesh.pivot = wall.motion.rotationCentre;
+    mesh.farthestVertex = mesh.mesh->farthestVertex(mesh.pivot);
+    wall.shape = std::move(mesh);
+}
+
 dem::Wall readWall(TableReader& t, const dem::World& world)
 {
     dem::Wall wall;
     wall.name = t.requiredString("name");
-    const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish"});
+    const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish", "mesh"});
     wall.material = world.materialId(t.requiredString("material"));
     if (type == "plane")
     {
@@ -134,6 +160,8 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
         wall.motion.angularVelocity = t.number("omega", 0.0) * disk.normal;
         wall.motion.rotationCentre = disk.point;
     }
+    else if (type == "mesh")
+        readMeshWall(t, wall);
     else
     {
         dem::DishShape dish;
@@ -160,6 +188,8 @@ void placeOnWall(dem::World& world, std::uint32_t i, const dem::Wall& wall, bool
         const Real distance = dot(p.position[i] - plane->point, normal);
         p.position[i] -= distance * normal; // onto the surface
     }
+    else if (std::holds_alternative<dem::MeshShape>(wall.shape))
+        t.fail("on_wall", "cannot place a sphere on a mesh wall (give its position)");
     else
     {
         const auto& dish = std::get<dem::DishShape>(wall.shape);
@@ -423,6 +453,11 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     auto pairs = top.arrayOfTables("pair");
     for (auto& w : top.arrayOfTables("wall"))
         world.walls.push_back(readWall(w, world));
+    for (const dem::Wall& wall : world.walls)
+        if (std::holds_alternative<dem::MeshShape>(wall.shape) && scene.checkpointInterval > 0)
+            simulation->fail(
+                "checkpoint_interval",
+                "checkpoints do not yet hold a mesh wall's rotation and contact slots; remove it");
 
     Real maxSpeed = 0;
     for (auto& s : top.arrayOfTables("sphere"))

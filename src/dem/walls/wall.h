@@ -7,13 +7,16 @@
 //             (a turntable is a disk that rotates about its own normal).
 //   Dish      the inside of a sphere of radius R whose lowest point is `lowestPoint`
 //             (centre C = lowestPoint + R z); only the lower hemisphere is solid.
+//   Mesh      a triangle surface (two-sided), kept in its body frame (walls/mesh_wall.h); it
+//             rotates about any axis through the rotation centre (moveWalls turns its frame).
 //
-// Rotation is restricted to the shape's symmetry axis (plane normal, dish vertical axis), so the
+// Rotation of an analytic shape is restricted to its symmetry axis (plane normal, dish vertical axis), so the
 // geometry itself never changes with time; translation moves the geometry.
 #pragma once
 
 #include "core/hot.h"
 #include "core/vec3.h"
+#include "dem/walls/mesh_wall.h"
 
 #include <cmath>
 #include <cstdint>
@@ -53,7 +56,7 @@ struct WallMotion
 struct Wall
 {
     std::string name;
-    std::variant<PlaneShape, DishShape> shape;
+    std::variant<PlaneShape, DishShape, MeshShape> shape;
     WallMotion motion;
     std::uint32_t material = 0;
     Vec3 displacement; // accumulated translation since t = 0 [m] (updated by the step)
