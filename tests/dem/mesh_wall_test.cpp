@@ -198,3 +198,29 @@ TEST(MeshWall, NormalForceOnSharedEdgeEqualsThePlanes)
     EXPECT_NEAR(fm.z, fp.z, 1e-12 * fp.z);
     EXPECT_NEAR(fm.x, 0, 1e-12 * fp.z);
 }
+
+TEST(MeshWall, BallInConcaveCornerFeelsBothFacesInTheForceStage)
+{
+    // Floor z = 0 and wall x = 0 of one mesh; a ball pressed into both: two touching contacts
+    // and a force with both normals' components (the plane's linear law on each: kn * overlap).
+    std::vector<Vec3> c = square();
+    const std::vector<Vec3> side{{0, 0, 0}, {0, 1, 1}, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, {0, 1, 1}};
+    c.insert(c.end(), side.begin(), side.end());
+    World world;
+    Material m;
+    m.density = 7800;
+    m.normalStiffness = 1e5;
+    world.addMaterial(m);
+    Wall mesh;
+    mesh.shape = shapeOf(c);
+    world.walls.push_back(std::move(mesh));
+    world.particles.add({0.009, 0.5, 0.008}, {}, {}, 0.01, m.density, 0);
+    prepare(world);
+    step(world, 1e-7);
+    EXPECT_EQ(world.health.touchingWalls, 2u);
+    const Vec3 f = world.particles.force[0];
+    // Overlaps 0.002 m (floor) and 0.001 m (side): kn * overlap, to 1e-4 relative (the normal
+    // damping of the half-step velocity that the contact force itself gives adds ~3e-5 of it).
+    EXPECT_NEAR(f.z, 1e5 * 0.002, 1e-4 * 200);
+    EXPECT_NEAR(f.x, 1e5 * 0.001, 1e-4 * 100);
+}
