@@ -138,7 +138,9 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
         const std::uint32_t i = walls.particle[k];
         const Wall& wall = world.walls[walls.wall[k]];
         const Real r = p.radius[i];
-        const WallGap gap = wallGap(wall, p.position[i], r);
+        const WallGap gap = std::holds_alternative<MeshShape>(wall.shape)
+                                ? walls.meshSlotGapAsStored(k, wall, p.position[i], r)
+                                : wallGap(wall, p.position[i], r);
         if (!gap.touching)
             continue;
         const PairParams& params = world.pairs(p.material[i], wall.material);

@@ -203,12 +203,13 @@ inline bool kickThenKickDrift(ParticleStore& p, const Vec3& gravity, Real dt,
                  : kickThenKickDriftRange(p, gravity, dt, reference, begin, end, m);
 }
 
-/// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves the geometry
-/// unchanged; only translation moves it). An oscillating wall is put at its exact position
-/// A sin(Omega (t+dt)), and its velocity is set to A Omega cos(Omega (t+dt/2)): the contact law
-/// pairs it with the particles' half-step velocities, and it is the displacement over the step
-/// divided by dt to O(dt^2). A wall with a velocity table is put at the table's exact integral
-/// and takes its velocity at t+dt/2; with an angular-velocity table, its angular velocity at t+dt/2.
+/// Advances prescribed wall motion by dt (rotation about the symmetry axis leaves an analytic
+/// shape unchanged; only translation moves it; a mesh's frame turns with its rotation). An
+/// oscillating wall is put at its exact position A sin(Omega (t+dt)), and its velocity is set to
+/// A Omega cos(Omega (t+dt/2)): the contact law pairs it with the particles' half-step velocities,
+/// and it is the displacement over the step divided by dt to O(dt^2). A wall with a velocity table
+/// is put at the table's exact integral and takes its velocity at t+dt/2; with an angular-velocity
+/// table, its angular velocity at t+dt/2.
 inline void moveWalls(std::vector<Wall>& walls, Real dt)
 {
     for (Wall& w : walls)
@@ -230,6 +231,8 @@ inline void moveWalls(std::vector<Wall>& walls, Real dt)
         }
         else
             w.displacement += dt * w.motion.velocity;
+        if (auto* mesh = std::get_if<MeshShape>(&w.shape))
+            rotateMesh(*mesh, dt * w.motion.angularVelocity);
     }
 }
 

@@ -14,9 +14,20 @@ bool WallContactList::needsRebuild(const std::vector<Wall>& walls, Real skin) co
     if (wallDisplacementAtBuild_.size() != walls.size() || wallActiveAtBuild_.size() != walls.size())
         return true;
     for (std::size_t w = 0; w < walls.size(); ++w)
-        if (lengthSquared(walls[w].displacement - wallDisplacementAtBuild_[w]) > 0.25 * skin * skin ||
-            wallActive(walls[w]) != bool(wallActiveAtBuild_[w]))
+    {
+        if (wallActive(walls[w]) != bool(wallActiveAtBuild_[w]))
             return true;
+        if (const auto* mesh = std::get_if<MeshShape>(&walls[w].shape))
+        {
+            if (wallTurnAtBuild_.size() != walls.size() ||
+                length(walls[w].displacement - wallDisplacementAtBuild_[w]) +
+                        (mesh->turned - wallTurnAtBuild_[w]) * mesh->farthestVertex >
+                    0.5 * skin)
+                return true;
+        }
+        else if (lengthSquared(walls[w].displacement - wallDisplacementAtBuild_[w]) > 0.25 * skin * skin)
+            return true;
+    }
     return false;
 }
 
@@ -52,8 +63,19 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
 {
     const std::size_t n = particles.size();
     wallDisplacementAtBuild_.resize(walls.size());
+    bool anyMesh = false;
     for (std::size_t w = 0; w < walls.size(); ++w)
+    {
         wallDisplacementAtBuild_[w] = walls[w].displacement;
+        anyMesh = anyMesh || std::holds_alternative<MeshShape>(walls[w].shape);
+    }
+    wallTurnAtBuild_.clear();
+    if (anyMesh)
+        for (const Wall& w : walls)
+        {
+            const auto* mesh = std::get_if<MeshShape>(&w.shape);
+            wallTurnAtBuild_.push_back(mesh ? mesh->turned : 0);
+        }
     markActivity(walls);
 
     // Candidates per chunk of particles, concatenated in order (sorted by (particle, wall)).
@@ -69,8 +91,13 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
                            for (std::size_t w = 0; w < walls.size(); ++w)
                                if (wallNear(walls[w], particles.position[i], particles.radius[i], skin))
                                {
-                                   ps.push_back(static_cast<std::uint32_t>(i));
-                                   ws.push_back(static_cast<std::uint32_t>(w));
+                                   const int slots =
+                                       std::holds_alternative<MeshShape>(walls[w].shape) ? kMeshSlots : 1;
+                                   for (int q = 0; q < slots; ++q)
+                                   {
+                                       ps.push_back(static_cast<std::uint32_t>(i));
+                                       ws.push_back(static_cast<std::uint32_t>(w));
+                                   }
                                }
                    });
     std::vector<std::uint32_t> newParticle, newWall;
@@ -83,7 +110,8 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     }
     const std::size_t count = newParticle.size();
 
-    // Re-key the history: each slot's source is the old slot with the same (particle, wall).
+    // Re-key the history: each slot's source is the old slot with the same (particle, wall) (the
+    // q-th slot of a mesh wall's group the old group's q-th).
     std::vector<std::uint32_t> source(count, ContactHistoryStore::kNoSource);
     const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
     std::size_t old = 0;
@@ -93,8 +121,19 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
         while (old < particle.size() && key(particle[old], wall[old]) < wanted)
             ++old;
         if (old < particle.size() && key(particle[old], wall[old]) == wanted)
-            source[k] = static_cast<std::uint32_t>(old);
+            source[k] = static_cast<std::uint32_t>(old++);
     }
+    if (anyMesh)
+    {
+        std::vector<Vec3> normals(count);
+        if (meshNormal.size() == particle.size())
+            for (std::size_t k = 0; k < count; ++k)
+                if (source[k] != ContactHistoryStore::kNoSource)
+                    normals[k] = meshNormal[source[k]];
+        meshNormal.swap(normals);
+    }
+    else
+        meshNormal.clear();
     if (history.size() != particle.size()) // (never built: no history to carry)
         history.clear();
     history.carry(source.data(), count);
@@ -137,10 +176,84 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
         if (rolling)
             renamed.rolling[k] = history.rolling[kept[k].second];
     }
+    if (!meshNormal.empty()) // (a mesh group's slots stay together and in order: stable keys)
+    {
+        std::vector<Vec3> normals(kept.size());
+        for (std::size_t k = 0; k < kept.size(); ++k)
+            normals[k] = meshNormal[kept[k].second];
+        meshNormal.swap(normals);
+    }
     particle.swap(newParticle);
     wall.swap(newWall);
     history = std::move(renamed);
     start.clear();
+}
+
+std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
+                                            MeshGroup& group, Vec3* next) const
+{
+    std::size_t first = k;
+    while (first > 0 && k - first < kMeshSlots - 1 && particle[first - 1] == particle[k] &&
+           wall[first - 1] == wall[k])
+        --first;
+    group.first = first;
+    MeshContact found[kMeshSlots];
+    const int count = meshContacts(std::get<MeshShape>(meshWall.shape), meshWall.displacement, x, r, found);
+    const Vec3* stored = meshNormal.data() + first;
+    bool taken[kMeshSlots] = {};
+    for (int q = 0; q < kMeshSlots; ++q)
+    {
+        group.gap[q] = WallGap{};
+        group.fresh[q] = false;
+        next[q] = Vec3{};
+    }
+    for (int c = 0; c < count; ++c) // deepest first
+    {
+        int best = -1;
+        Real bestCos = 0.5; // a contact keeps its slot while its normal turns by < 60 degrees
+        for (int q = 0; q < kMeshSlots; ++q)
+            if (!taken[q] && dot(stored[q], found[c].bodyNormal) > bestCos)
+            {
+                best = q;
+                bestCos = dot(stored[q], found[c].bodyNormal);
+            }
+        if (best < 0) // a new contact: an empty slot, else one whose contact has gone (fresh)
+        {
+            for (int q = 0; q < kMeshSlots && best < 0; ++q)
+                if (!taken[q] && lengthSquared(stored[q]) == 0)
+                    best = q;
+            for (int q = 0; q < kMeshSlots && best < 0; ++q)
+                if (!taken[q])
+                    best = q;
+            group.fresh[best] = lengthSquared(stored[best]) > 0;
+        }
+        taken[best] = true;
+        next[best] = found[c].bodyNormal;
+        group.gap[best] = {true, found[c].overlap, found[c].normal, r};
+    }
+    return first;
+}
+
+const WallGap& WallContactList::meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
+                                            MeshGroup& group)
+{
+    if (group.first == ~std::size_t(0) || k < group.first || k >= group.first + kMeshSlots ||
+        particle[group.first] != particle[k] || wall[group.first] != wall[k])
+    {
+        Vec3 next[kMeshSlots];
+        const std::size_t first = matchMeshGroup(k, meshWall, x, r, group, next);
+        for (int q = 0; q < kMeshSlots; ++q)
+            meshNormal[first + std::size_t(q)] = next[q];
+    }
+    return group.gap[k - group.first];
+}
+
+WallGap WallContactList::meshSlotGapAsStored(std::size_t k, const Wall& meshWall, const Vec3& x, Real r) const
+{
+    MeshGroup group;
+    Vec3 next[kMeshSlots];
+    const std::size_t first = matchMeshGroup(k, meshWall, x, r, group, next);
+    return group.gap[k - first];
 }
 
 std::size_t WallContactList::slotOf(std::uint32_t particleIndex, std::uint32_t wallIndex) const
@@ -156,7 +269,8 @@ std::size_t WallContactList::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(particle) + bytes(wall) + bytes(start) + bytes(wallDisplacementAtBuild_) +
-           bytes(wallActiveAtBuild_) + bytes(loadForce) + bytes(loadMoment);
+           bytes(wallActiveAtBuild_) + bytes(loadForce) + bytes(loadMoment) + bytes(meshNormal) +
+           bytes(wallTurnAtBuild_);
 }
 
 } // namespace veridem::dem

@@ -8,6 +8,14 @@
 // (ContactHistoryStore, World::wallHistory), entry k for slot k: a rebuild re-keys it by
 // (particle, wall), and the force stage zeroes an entry when its contact opens.
 //
+// A mesh wall (walls/mesh_wall.h) may touch a sphere at several places at once (a concave
+// corner), so its candidate takes kMeshSlots consecutive slots with the same (particle, wall): one
+// per distinct contact. Each slot keeps the body-frame normal of its contact (meshNormal), and each
+// step the contacts found are matched to the slots by that normal (meshSlotGap): the deepest first
+// takes the slot whose stored normal is closest (within 60 degrees), so a contact keeps its
+// tangential and rolling history while its feature changes from face to edge to the next face as
+// the ball rolls on. A rebuild carries the slots of a continuing (particle, wall) in order.
+//
 // A dense (particle x wall) history would cost 24-48 bytes per particle per wall and test every
 // wall for every particle each step; a bed in a box has 5 walls and 1 in 5 particles near one.
 #pragma once
@@ -29,9 +37,29 @@ class WallContactList
     std::vector<std::uint32_t> particle; // sorted by (particle, wall)
     std::vector<std::uint32_t> wall;
     std::vector<std::uint32_t> start; // slots [start[p], start[p+1]) belong to particle p
+    // Per slot, the body-frame unit normal of its mesh contact (zero if none); empty unless some
+    // wall is a mesh.
+    std::vector<Vec3> meshNormal;
+
+    /// The contacts of one (particle, mesh wall) candidate matched to its slots, for a loop over
+    /// slots: `first` is the group's first slot; `fresh` marks a slot taken over by a new contact
+    /// (its history must be forgotten before use).
+    struct MeshGroup
+    {
+        std::size_t first = ~std::size_t(0);
+        WallGap gap[kMeshSlots];
+        bool fresh[kMeshSlots] = {};
+    };
+    /// The gap of slot k of a mesh wall for the sphere (x, r [m]); matches the group's contacts to
+    /// its slots (and updates meshNormal) when k is in a group other than `group`'s.
+    const WallGap& meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group);
+    /// The same without updating meshNormal (after the force stage: the same assignment), for
+    /// passes that only read the contacts (contact_diagnostics.cpp).
+    WallGap meshSlotGapAsStored(std::size_t k, const Wall& meshWall, const Vec3& x, Real r) const;
 
     /// True if some wall translated more than skin/2, or switched on or off (wallActive), since
-    /// the last build (or never built).
+    /// the last build (or never built); a mesh wall counts its rotation as the angle turned times
+    /// its farthest vertex from the pivot.
     bool needsRebuild(const std::vector<Wall>& walls, Real skin) const;
     /// Rebuilds the candidate list and re-keys `history` (its entries are the slots') by
     /// (particle, wall).
@@ -67,6 +95,12 @@ class WallContactList
     friend struct CheckpointAccess; // io/dem_checkpoint.cpp saves and restores the private state
     std::vector<Vec3> wallDisplacementAtBuild_;
     std::vector<std::uint8_t> wallActiveAtBuild_;
+    std::vector<Real> wallTurnAtBuild_; // mesh walls' accumulated rotation [rad]; empty without meshes
+    /// Matches the contacts of the (particle, mesh wall) group holding slot k to its slots against
+    /// the stored normals: fills `group` and the slots' new normals `next` (kMeshSlots); returns
+    /// the group's first slot.
+    std::size_t matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group,
+                               Vec3* next) const;
 };
 
 /// The load of wall w on the particles' side: the total force ON the wall [N] (minus the sum of

@@ -34,6 +34,23 @@ using WallLaw = void (*)(LawBatch&, std::size_t, Real, const LawParams*);
     lawLanes<Lanes2, false>(b, count, dt, uniform);
 }
 
+/// The gap of wall slot k for the sphere (x, r [m]): the wall shape's (wallGap), or for a mesh wall
+/// the contact matched to the slot (WallContactList::meshSlotGap; a slot taken over by a new contact
+/// starts with a fresh history).
+VERIDEM_HOT_INLINE WallGap slotGap(WallContactList& list, std::size_t k, const Wall& wall, const Vec3& x,
+                                   Real r, std::optional<WallContactList::MeshGroup>& group,
+                                   ContactHistoryStore& history)
+{
+    if (!std::holds_alternative<MeshShape>(wall.shape)) [[likely]]
+        return wallGap(wall, x, r);
+    if (!group)
+        group.emplace();
+    const WallGap gap = list.meshSlotGap(k, wall, x, r, *group);
+    if (group->fresh[k - group->first])
+        history.forget(k);
+    return gap;
+}
+
 /// The contact input of particle i touching `wall` (gap from wallGap), as the contact law takes
 /// it; `arm` is set to the lever arm from the centre to the contact point [m].
 VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const Wall& wall, const WallGap& gap,
@@ -95,12 +112,13 @@ void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const 
 ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
-    const WallContactList& list = world.wallContacts;
+    WallContactList& list = world.wallContacts;
     ContactHistoryStore& history = world.wallHistory;
     ContactHealth health{0, 0, false, 0};
     const bool loads = list.recordLoads;
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
+    std::optional<WallContactList::MeshGroup> group; // (made on the first mesh slot only)
     const WallLaw kernel = exec::isAvx2() ? wallLawAvx2 : wallLawPortable;
     LawBatch b;
     std::size_t m = 0;
@@ -128,7 +146,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     {
         const std::uint32_t i = list.particle[k];
         const Wall& wall = world.walls[list.wall[k]];
-        const WallGap gap = wallGap(wall, p.position[i], p.radius[i]);
+        const WallGap gap = slotGap(list, k, wall, p.position[i], p.radius[i], group, history);
         if (!gap.touching)
         {
             history.forget(k);
@@ -311,15 +329,17 @@ ContactHealth planeWallForcesPortable(World& world, Real dt, std::size_t begin, 
 }
 
 /// Wall contact k of the particle whose state is `s`, through the general contact law (any
-/// model): updates the contact's history (cleared if it is not touching); if it touches, adds its
-/// force [N] and torque [N m] to `force` and `torque` and folds it into `health`.
+/// model; `group`: the mesh contacts being matched to their slots, WallContactList::meshSlotGap): updates the
+/// contact's history (cleared if it is not touching); if it touches, adds its force [N] and torque [N m] to
+/// `force` and `torque` and folds it into `health`.
 VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, std::uint32_t i,
                                           const ParticleState& s, Vec3& force, Vec3& torque,
-                                          ContactHealth& health)
+                                          ContactHealth& health,
+                                          std::optional<WallContactList::MeshGroup>& group)
 {
     const Wall& wall = world.walls[world.wallContacts.wall[k]];
     ContactHistoryStore& store = world.wallHistory;
-    const WallGap gap = wallGap(wall, s.position, s.radius);
+    const WallGap gap = slotGap(world.wallContacts, k, wall, s.position, s.radius, group, store);
     if (!gap.touching)
     {
         store.forget(k);
@@ -362,10 +382,11 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
         return exec::isAvx2() ? planeWallForcesAvx2(world, dt, begin, end, frames)
                               : planeWallForcesPortable(world, dt, begin, end, frames);
     }
+    std::optional<WallContactList::MeshGroup> group; // (made on the first mesh slot only)
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
         const std::uint32_t i = list.particle[k];
-        wallContactScalar(world, dt, k, i, particleState(p, i), p.force[i], p.torque[i], health);
+        wallContactScalar(world, dt, k, i, particleState(p, i), p.force[i], p.torque[i], health, group);
     }
     return health;
 }
@@ -379,8 +400,9 @@ ContactHealth wallContactsOf(World& world, Real dt, std::uint32_t i, const Parti
         return health;
     if (list.recordLoads)
         clearWallLoads(list, list.start[i], list.start[i + 1]);
+    std::optional<WallContactList::MeshGroup> group; // (made on the first mesh slot only)
     for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k)
-        wallContactScalar(world, dt, k, i, s, force, torque, health);
+        wallContactScalar(world, dt, k, i, s, force, torque, health, group);
     return health;
 }
 

@@ -1,7 +1,12 @@
 #include "io/wall_keys.h"
 
+#include "io/surface_mesh_reader.h"
+
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <memory>
 
 namespace veridem::io
 {
@@ -79,6 +84,29 @@ void readCommonWallKeys(TableReader& t, dem::Wall& wall, const Vec3& axis)
     if (!(wall.activeUntil > wall.activeFrom))
         t.fail("active_until", "must be after active_from (s)");
     wall.loadPoint = t.vec3("load_point", m.rotationCentre);
+}
+
+/// A triangle-mesh wall: the surface from `file` (STL or Gmsh, relative to the scene's directory)
+/// times `scale`, translating at `velocity` and turning at `omega` (a vector) about
+/// `rotation_centre`. The mesh's warnings (open boundary, non-manifold edges) go to stderr.
+void readMeshWall(TableReader& t, dem::Wall& wall)
+{
+    const std::string file = t.requiredString("file");
+    const Real scale = t.number("scale", 1.0);
+    t.requirePositive("scale", scale, "");
+    const std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / file;
+    dem::MeshReport report;
+    dem::MeshShape mesh;
+    mesh.mesh = std::make_shared<const dem::TriangleMesh>(
+        dem::buildTriangleMesh(readSurfaceMesh(path.string(), scale), path.string(), report));
+    for (const std::string& warning : report.warnings)
+        std::fprintf(stderr, "veridem: warning: wall '%s': %s\n", wall.name.c_str(), warning.c_str());
+    wall.motion.velocity = t.vec3("velocity", {});
+    wall.motion.angularVelocity = t.vec3("omega", {});
+    wall.motion.rotationCentre = t.vec3("rotation_centre", {});
+    mesh.pivot = wall.motion.rotationCentre;
+    mesh.farthestVertex = mesh.mesh->farthestVertex(mesh.pivot);
+    wall.shape = std::move(mesh);
 }
 
 bool readCylinder(TableReader& t, dem::Wall& wall)

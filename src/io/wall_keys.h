@@ -1,6 +1,6 @@
 // The [[wall]] keys shared by every wall type (docs/scene-format.md): prescribed motion tables
 // (velocity_table, omega_table), the active window (active_from, active_until) and the load
-// reference point (load_point); and the cylinder type with its end caps.
+// reference point (load_point); the cylinder type with its end caps, and the mesh type.
 #pragma once
 
 #include "dem/walls/wall.h"
@@ -19,6 +19,11 @@ Vec3 symmetryAxis(const dem::Wall& wall);
 /// shape, constant velocity and angular velocity are already read. `axis`: the shape's symmetry
 /// axis (unit), the only direction an angular velocity may have.
 void readCommonWallKeys(TableReader& t, dem::Wall& wall, const Vec3& axis);
+
+/// A triangle-mesh wall: the surface from `file` (STL or Gmsh, relative to the scene's directory)
+/// times `scale`, translating at `velocity` [m/s] and turning at `omega` [rad/s, a vector] about
+/// `rotation_centre` [m]. The mesh's warnings (open boundary, non-manifold edges) go to stderr.
+void readMeshWall(TableReader& t, dem::Wall& wall);
 
 /// Reads a `type = "cylinder"` wall's shape and rotation (point, axis, radius, length, side,
 /// omega) into `wall`; returns true if it asks for closed ends (caps = true).

@@ -6,22 +6,20 @@
 // 1e-6 relative (the spec's 0.5 % is far looser). t* is detected as the first zero crossing of
 // the slip velocity v - a w, interpolated between steps: 0.5 % (BENCHMARKS 5 #2; the soft contact
 // adds an O(tc) transition).
-#include "support.h"
+#include "bowling_ball.h"
 
 #include <cmath>
 
 namespace veridem::verify
 {
-namespace
-{
-CaseResult run(const CaseContext& context)
+CaseResult bowlingBall(const CaseContext& context, const dem::Wall& floor, std::vector<Vec3>* path)
 {
     Material steel = flatTurntableBall();
     steel.friction = 0.3;
     steel.rollingModel = dem::RollingModel::None;
     const Real a = kFlatBallRadius, v0 = 2.0, mu = steel.friction;
     World world = worldWith(steel, {0, 0, -kG});
-    world.walls.push_back(floorWall());
+    world.walls.push_back(floor);
     const Real m = sphereMass(steel.density, a);
     const Real restingOverlap = m * kG / steel.normalStiffness;
     world.particles.add({0, 0, a - restingOverlap}, {v0, 0, 0}, {}, a, steel.density, 0);
@@ -48,6 +46,8 @@ CaseResult run(const CaseContext& context)
                }
                previousSlip = slip;
                previousT = w.time;
+               if (path && w.stepCount % kPathStride == 0)
+                   path->push_back(w.particles.position[0]);
            });
     const Real vFinal = world.particles.velocity[0].x;
     const Real energy0 = 0.5 * m * v0 * v0;
@@ -62,6 +62,13 @@ CaseResult run(const CaseContext& context)
                          5e-3, "BENCHMARKS 5 #2; includes the resting contact's tiny elastic energy"));
     r.series.push_back(std::move(speeds));
     return r;
+}
+
+namespace
+{
+CaseResult run(const CaseContext& context)
+{
+    return bowlingBall(context, floorWall(), nullptr);
 }
 } // namespace
 

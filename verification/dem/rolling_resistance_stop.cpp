@@ -6,18 +6,19 @@
 // Type C (EPSD) on an incline with tan(theta) = 0.5 muR' holds the ball: drift < 1e-6 m over 1 s
 // after 4 s of settling (BENCHMARKS 7 #12); at tan(theta) = 2 muR' it rolls with
 // a = (5/7) g (sin(theta) - muR' cos(theta)) within 1 %.
-#include "support.h"
+#include "rolling_resistance_stop.h"
+
+#include "bowling_ball.h"
 
 namespace veridem::verify
 {
-namespace
-{
-Real rollingStopDistance(const CaseContext& context, Real& driftAfterStop)
+Real rollingStopDistance(const CaseContext& context, const dem::Wall& floor, Real& driftAfterStop,
+                         std::vector<Vec3>* path)
 {
     Material steel = flatTurntableBall(); // type A, muR = 1.5e-6 m
     const Real a = kFlatBallRadius, v0 = 0.1;
     World world = worldWith(steel, {0, 0, -kG});
-    world.walls.push_back(floorWall());
+    world.walls.push_back(floor);
     const Real m = sphereMass(steel.density, a);
     world.particles.add({0, 0, a - m * kG / steel.normalStiffness}, {v0, 0, 0}, {0, v0 / a, 0}, a,
                         steel.density, 0);
@@ -27,6 +28,8 @@ Real rollingStopDistance(const CaseContext& context, Real& driftAfterStop)
            {
                if (stopX < 0 && w.particles.velocity[0].x <= 0)
                    stopX = w.particles.position[0].x;
+               if (path && w.stepCount % kPathStride == 0)
+                   path->push_back(w.particles.position[0]);
            });
     const Real xAtStop = world.particles.position[0].x;
     runFor(world, 5.0, 1e-5, context, "rolling_resistance_stop", nullptr);
@@ -34,6 +37,8 @@ Real rollingStopDistance(const CaseContext& context, Real& driftAfterStop)
     return stopX;
 }
 
+namespace
+{
 struct EpsdResult
 {
     Real drift, acceleration;
@@ -72,7 +77,7 @@ CaseResult run(const CaseContext& context)
     CaseResult r;
     const Real a = kFlatBallRadius, v0 = 0.1, muR = flatTurntableBall().rollingFrictionLength;
     Real drift = 0;
-    const Real stop = rollingStopDistance(context, drift);
+    const Real stop = rollingStopDistance(context, floorWall(), drift, nullptr);
     r.quantities.push_back(relativeQuantity("type A stop distance", "m", 7 * a * v0 * v0 / (10 * muR * kG),
                                             stop, 1e-2, "BENCHMARKS 7 #12"));
     r.quantities.push_back(absoluteQuantity("type A drift after stop (5 s)", "m", 0, drift, 1e-6,

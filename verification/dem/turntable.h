@@ -7,6 +7,7 @@
 #pragma once
 
 #include "dem/walls/wall.h"
+#include "mesh_floors.h"
 #include "support.h"
 
 namespace veridem::verify
@@ -22,8 +23,9 @@ struct TurntableSetup
     Real initialAngleDegrees = 180;
     Real initialSpeed = 0.0; // |v0| lab frame [m/s]
     Real initialDirectionDegrees = 270;
-    Real stiffness = 1e5;   // kn [N/m]
-    Real tableRadius = 0.2; // [m]
+    Real stiffness = 1e5;     // kn [N/m]
+    Real tableRadius = 0.2;   // [m]
+    bool meshedTable = false; // the table as an irregular triangle mesh (mesh_floors.h: meshedDisk)
 };
 
 /// In-plane orthonormal basis (e1, e2) and normal k of the (possibly tilted) table.
@@ -51,9 +53,10 @@ inline World turntableWorld(const TurntableSetup& s)
     World world = worldWith(ball, {0, 0, -kG});
     const TableFrame f = tableFrame(s);
 
-    dem::Wall table;
+    dem::Wall table = s.meshedTable ? meshedDisk(s.tableRadius, f.e1, f.e2, 12, 40) : dem::Wall{};
     table.name = "turntable";
-    table.shape = dem::PlaneShape{{0, 0, 0}, f.k, s.tableRadius};
+    if (!s.meshedTable)
+        table.shape = dem::PlaneShape{{0, 0, 0}, f.k, s.tableRadius};
     table.motion.angularVelocity = s.omega * f.k;
     world.walls.push_back(table);
 
@@ -78,5 +81,10 @@ inline World turntableWorld(const TurntableSetup& s)
     dem::prepare(world);
     return world;
 }
+
+/// Test 1b (turntable_t1.cpp): the pushed ball's set-up, and its orbit checked against theory
+/// (rate 2/7 Omega, radius, centre) on the table `s` describes.
+TurntableSetup orbitSetup();
+CaseResult turntableOrbit(const CaseContext& context, const TurntableSetup& s);
 
 } // namespace veridem::verify

@@ -38,11 +38,18 @@ CaseResult runStationary(const CaseContext& context)
     return r;
 }
 
-CaseResult runOrbit(const CaseContext& context)
+} // namespace
+
+TurntableSetup orbitSetup()
 {
     TurntableSetup s;
     s.rollingFriction = 0;
     s.initialSpeed = 0.107;
+    return s;
+}
+
+CaseResult turntableOrbit(const CaseContext& context, const TurntableSetup& s)
+{
     World world = turntableWorld(s);
     const TableFrame f = tableFrame(s);
     const Real omegaOrbit = 2.0 / 7.0 * s.omega;
@@ -89,6 +96,13 @@ CaseResult runOrbit(const CaseContext& context)
                                             "BENCHMARKS 1b spec (0.5 mm over 10 orbits)"));
     r.series.push_back(std::move(path));
     return r;
+}
+
+namespace
+{
+CaseResult runOrbit(const CaseContext& context)
+{
+    return turntableOrbit(context, orbitSetup());
 }
 } // namespace
 

@@ -9,17 +9,21 @@
 //             (centre C = lowestPoint + R z); only the lower hemisphere is solid.
 //   Cylinder  the lateral surface of a finite circular cylinder, particles inside (a drum) or
 //             outside (a post); dem/walls/cylinder.h.
+//   Mesh      a triangle surface (two-sided), kept in its body frame (walls/mesh_wall.h); it
+//             rotates about any axis through the rotation centre (moveWalls turns its frame).
 //
-// Rotation is restricted to the shape's symmetry axis (plane normal, dish vertical axis), so the
-// geometry itself never changes with time; translation moves the geometry. The velocity and the
-// angular velocity may follow piecewise-linear tables in time (dem/walls/motion_table.h). A wall
-// may exist only in a time window [activeFrom, activeUntil): outside it, it has no contacts.
+// Rotation of an analytic shape is restricted to its symmetry axis (plane normal, dish vertical
+// axis, cylinder axis), so the geometry itself never changes with time; translation moves the
+// geometry. The velocity and the angular velocity may follow piecewise-linear tables in time
+// (dem/walls/motion_table.h). A wall may exist only in a time window [activeFrom, activeUntil):
+// outside it, it has no contacts.
 #pragma once
 
 #include "core/hot.h"
 #include "core/vec3.h"
 #include "dem/walls/cylinder.h"
 #include "dem/walls/motion_table.h"
+#include "dem/walls/mesh_wall.h"
 
 #include <cmath>
 #include <cstdint>
@@ -65,7 +69,7 @@ struct WallMotion
 struct Wall
 {
     std::string name;
-    std::variant<PlaneShape, DishShape, CylinderShape> shape;
+    std::variant<PlaneShape, DishShape, CylinderShape, MeshShape> shape;
     WallMotion motion;
     std::uint32_t material = 0;
     Vec3 displacement; // accumulated translation since t = 0 [m] (updated by the step)

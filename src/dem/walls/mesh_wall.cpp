@@ -1,0 +1,196 @@
+#include "dem/walls/mesh_wall.h"
+
+#include "dem/walls/wall.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace veridem::dem
+{
+
+void rotateMesh(MeshShape& shape, const Vec3& angle)
+{
+    const Real theta = length(angle);
+    if (!(theta > 0))
+        return;
+    // Rodrigues: Q v = v cos + (k x v) sin + k (k.v)(1 - cos); R <- Q R, applied to R's columns.
+    const Vec3 k = angle / theta;
+    const Real c = std::cos(theta), s = std::sin(theta);
+    const auto q = [&](const Vec3& v) { return c * v + s * cross(k, v) + ((1 - c) * dot(k, v)) * k; };
+    std::array<Vec3, 3>& R = shape.rotation;
+    const Vec3 c0 = q({R[0].x, R[1].x, R[2].x}), c1 = q({R[0].y, R[1].y, R[2].y}),
+               c2 = q({R[0].z, R[1].z, R[2].z});
+    R[0] = {c0.x, c1.x, c2.x};
+    R[1] = {c0.y, c1.y, c2.y};
+    R[2] = {c0.z, c1.z, c2.z};
+    // Re-orthonormalise (Gram-Schmidt on the rows) so round-off does not accumulate.
+    R[0] = R[0] / length(R[0]);
+    R[1] = R[1] - dot(R[1], R[0]) * R[0];
+    R[1] = R[1] / length(R[1]);
+    R[2] = cross(R[0], R[1]);
+    shape.turned += theta;
+}
+
+namespace
+{
+
+enum Rank : int
+{
+    FaceRank = 0,
+    EdgeRank = 1,
+    VertexRank = 2
+};
+
+struct Found
+{
+    int rank;
+    std::uint32_t feature; // triangle, edge or vertex id
+    Real overlap;
+    Vec3 normal; // body frame
+};
+
+constexpr Real kVoronoiSlack = 1e-10; // relative: a centre on the boundary of two regions is in both
+constexpr Real kSameNormal = 1e-12;   // 1 - cos of the angle below which two contacts are one
+
+/// True if the centre p, at distance d from edge g's point q (p - q = diff), is not over the
+/// inside of any triangle using the edge.
+bool edgeRegion(const TriangleMesh& m, std::uint32_t g, const Vec3& diff, Real d)
+{
+    for (std::uint32_t u = m.edgeStart[g]; u < m.edgeStart[g + 1]; ++u)
+        if (dot(diff, m.inward[m.edgeUsers[u] / 3][m.edgeUsers[u] % 3]) > kVoronoiSlack * d)
+            return false;
+    return true;
+}
+
+/// True if the centre (p - vertex v = diff, |diff| = d) is not beyond v along any of its edges.
+bool vertexRegion(const TriangleMesh& m, std::uint32_t v, const Vec3& diff, Real d)
+{
+    for (std::uint32_t u = m.vertexStart[v]; u < m.vertexStart[v + 1]; ++u)
+    {
+        const Vec3 edge = m.vertices[m.vertexNeighbours[u]] - m.vertices[v];
+        if (dot(diff, edge) > kVoronoiSlack * d * length(edge))
+            return false;
+    }
+    return true;
+}
+
+constexpr int kMaxFound = 32;
+
+/// Contacts of body-frame point p (radius r, plus `reach` [m]) after elimination, deepest first.
+int findContacts(const TriangleMesh& m, const Vec3& p, Real r, Found* out)
+{
+    thread_local std::vector<std::uint32_t> near;
+    const Vec3 span{r, r, r};
+    m.trianglesNear(p - span, p + span, near);
+    Found found[kMaxFound];
+    int count = 0;
+    for (const std::uint32_t t : near)
+    {
+        const auto& tri = m.triangles[t];
+        const Vec3& a = m.vertices[tri[0]];
+        const TrianglePoint cp = closestPointOnTriangle(p, a, m.vertices[tri[1]], m.vertices[tri[2]]);
+        Found f;
+        if (cp.feature == MeshFeature::Face)
+        {
+            const Real s = dot(p - a, m.normals[t]);
+            const Real d = std::fabs(s);
+            if (!(d < r))
+                continue;
+            f = {FaceRank, t, r - d, s < 0 ? -m.normals[t] : m.normals[t]};
+        }
+        else
+        {
+            const Vec3 diff = p - cp.point;
+            const Real d = length(diff);
+            if (!(d < r))
+                continue;
+            const Vec3 normal = d > 0 ? diff / d : m.normals[t];
+            if (cp.feature == MeshFeature::Edge)
+            {
+                const std::uint32_t g = m.triangleEdges[t][cp.index];
+                if (!edgeRegion(m, g, diff, d))
+                    continue;
+                f = {EdgeRank, g, r - d, normal};
+            }
+            else
+            {
+                const std::uint32_t v = tri[cp.index];
+                if (!vertexRegion(m, v, diff, d))
+                    continue;
+                f = {VertexRank, v, r - d, normal};
+            }
+        }
+        bool duplicate = false;
+        for (int q = 0; q < count && !duplicate; ++q)
+            duplicate = found[q].rank == f.rank && found[q].feature == f.feature;
+        if (!duplicate && count < kMaxFound)
+            found[count++] = f;
+    }
+    // Faces first, then deeper, then by id (a deterministic order), and merge equal normals.
+    std::sort(found, found + count,
+              [](const Found& x, const Found& y)
+              {
+                  if (x.rank != y.rank)
+                      return x.rank < y.rank;
+                  if (x.overlap != y.overlap)
+                      return x.overlap > y.overlap;
+                  return x.feature < y.feature;
+              });
+    int kept = 0;
+    for (int q = 0; q < count; ++q)
+    {
+        bool merged = false;
+        for (int k = 0; k < kept && !merged; ++k)
+            merged = 1 - dot(out[k].normal, found[q].normal) < kSameNormal;
+        if (!merged)
+            out[kept++] = found[q];
+    }
+    std::stable_sort(out, out + kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
+    return kept;
+}
+
+} // namespace
+
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+{
+    Found found[kMaxFound];
+    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, found);
+    const int kept = std::min(count, kMeshSlots);
+    for (int q = 0; q < kept; ++q)
+        out[q] = {found[q].overlap, worldDirection(shape, found[q].normal), found[q].normal};
+    return kept;
+}
+
+WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r)
+{
+    MeshContact c[kMeshSlots];
+    WallGap g;
+    if (meshContacts(shape, offset, x, r, c) == 0)
+        return g;
+    g.touching = true;
+    g.overlap = c[0].overlap;
+    g.normal = c[0].normal;
+    g.effectiveRadius = r;
+    return g;
+}
+
+bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach)
+{
+    const TriangleMesh& m = *shape.mesh;
+    const Vec3 p = bodyPoint(shape, offset, x);
+    const Real limit = r + reach;
+    thread_local std::vector<std::uint32_t> near;
+    m.trianglesNear(p - Vec3{limit, limit, limit}, p + Vec3{limit, limit, limit}, near);
+    for (const std::uint32_t t : near)
+    {
+        const auto& tri = m.triangles[t];
+        const TrianglePoint cp =
+            closestPointOnTriangle(p, m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
+        if (lengthSquared(p - cp.point) < limit * limit)
+            return true;
+    }
+    return false;
+}
+
+} // namespace veridem::dem

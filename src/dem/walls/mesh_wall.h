@@ -1,0 +1,85 @@
+// A triangle-mesh wall: a TriangleMesh kept in its body frame, placed in the world by the wall's
+// translation and an accumulated rotation about the rotation centre,
+//   x_world = pivot + displacement + R (x_body - pivot),
+// so a particle is mapped into the body frame for every query and the mesh's grid never changes.
+//
+// Contacts of a sphere with the surface (meshContacts). Each triangle gives its closest point to
+// the centre, on its face, an edge or a vertex (closestPointOnTriangle). On a connected surface the
+// same touch is then seen by several triangles, and a sphere straddling the shared edge of two
+// coplanar triangles would feel two contacts. The contact-elimination rules of Kremmer & Favier
+// (2001) as refined by Su, Gu, Zhou & Shen (2011) and Hu, Hu, Jin & Wang (2013) remove them: a face
+// contact suppresses the contacts with its triangle's edges and vertices, an edge contact those
+// with its end vertices, and the duplicate edge and vertex contacts reported by adjacent triangles
+// are merged. They are applied here in their local, equivalent form, which also covers features
+// that are not of the same triangle (a fan of slivers): a contact with an edge or vertex is kept
+// only if its closest point is a local minimum of the distance over the whole surface, i.e. the
+// centre lies in the feature's Voronoi region: for an edge, not over the inside of any triangle
+// using it (dot(c - q, inward) <= 0 for each); for a vertex, not beyond it along any of its edges.
+// A face contact always is one. Contacts of one feature (an edge seen by both its triangles) and
+// contacts whose normals agree to 1e-12 (an edge hit exactly on the line between two coplanar
+// faces, within round-off of the face contact) are merged, faces first, then the deeper. Several
+// distinct contacts remain possible: a sphere in a concave corner of one mesh touches both faces.
+// The normal is the closest-point normal (centre minus closest point, normalised; the face normal
+// on a face), the overlap r - distance, and R* = r (the wall is taken as flat at the contact).
+#pragma once
+
+#include "core/vec3.h"
+#include "dem/walls/triangle_mesh.h"
+
+#include <array>
+#include <memory>
+
+namespace veridem::dem
+{
+
+struct WallGap;
+
+/// Contact slots per (particle, mesh wall) candidate: the distinct contacts one sphere may have
+/// with one mesh at a time (three in a cube's corner, one spare). Beyond it the shallowest
+/// contacts are dropped (meshContacts keeps the deepest kMeshSlots).
+inline constexpr int kMeshSlots = 4;
+
+struct MeshShape
+{
+    std::shared_ptr<const TriangleMesh> mesh;                                  // body frame [m]
+    Vec3 pivot;                                                                // rotation centre at t = 0 [m]
+    std::array<Vec3, 3> rotation{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}; // rows of R
+    Real turned = 0;         // accumulated rotation angle since t = 0 [rad]
+    Real farthestVertex = 0; // largest vertex distance from the pivot [m]
+};
+
+/// Rotates the mesh by the rotation vector `angle` [rad] (omega dt) about its pivot.
+void rotateMesh(MeshShape& shape, const Vec3& angle);
+
+/// A world point x [m] in the mesh's body frame (offset: the wall's displacement [m]).
+inline Vec3 bodyPoint(const MeshShape& s, const Vec3& offset, const Vec3& x)
+{
+    const Vec3 d = x - s.pivot - offset;
+    return s.pivot + (d.x * s.rotation[0] + d.y * s.rotation[1] + d.z * s.rotation[2]);
+}
+
+/// A body-frame direction in the world.
+inline Vec3 worldDirection(const MeshShape& s, const Vec3& v)
+{
+    return {dot(s.rotation[0], v), dot(s.rotation[1], v), dot(s.rotation[2], v)};
+}
+
+struct MeshContact
+{
+    Real overlap;    // [m]
+    Vec3 normal;     // unit, world frame, from the surface towards the centre
+    Vec3 bodyNormal; // the same in the body frame
+};
+
+/// The contacts of a sphere (centre x, radius r [m]) with the mesh after contact elimination
+/// (header comment), deepest first, at most kMeshSlots; returns their number.
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out);
+
+/// The deepest contact of a sphere with the mesh (for single-gap uses: diagnostics, initial
+/// overlap checks). The force stage takes all of them (WallContactList::meshGaps).
+WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r);
+
+/// True if the sphere is within `reach` [m] of the mesh surface (the candidate-list test).
+bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach);
+
+} // namespace veridem::dem

@@ -1,0 +1,269 @@
+#include "dem/walls/triangle_mesh.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace veridem::dem
+{
+
+namespace
+{
+
+struct VertexOrder
+{
+    bool operator()(const Vec3& a, const Vec3& b) const
+    {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    }
+};
+
+/// Edges of the mesh and their users (triangle * 3 + local edge), and each triangle's edge ids.
+void buildEdges(TriangleMesh& m)
+{
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> ids;
+    std::vector<std::vector<std::uint32_t>> users;
+    m.triangleEdges.resize(m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e)
+        {
+            std::uint32_t a = m.triangles[t][e], b = m.triangles[t][(e + 1) % 3];
+            if (a > b)
+                std::swap(a, b);
+            const auto [it, added] = ids.try_emplace({a, b}, static_cast<std::uint32_t>(m.edges.size()));
+            if (added)
+            {
+                m.edges.push_back({a, b});
+                users.emplace_back();
+            }
+            users[it->second].push_back(static_cast<std::uint32_t>(t * 3 + e));
+            m.triangleEdges[t][e] = it->second;
+        }
+    m.edgeStart.assign(1, 0);
+    for (const auto& u : users)
+    {
+        m.edgeUsers.insert(m.edgeUsers.end(), u.begin(), u.end());
+        m.edgeStart.push_back(static_cast<std::uint32_t>(m.edgeUsers.size()));
+    }
+    std::vector<std::vector<std::uint32_t>> neighbours(m.vertices.size());
+    for (const auto& e : m.edges)
+    {
+        neighbours[e[0]].push_back(e[1]);
+        neighbours[e[1]].push_back(e[0]);
+    }
+    m.vertexStart.assign(1, 0);
+    for (const auto& n : neighbours)
+    {
+        m.vertexNeighbours.insert(m.vertexNeighbours.end(), n.begin(), n.end());
+        m.vertexStart.push_back(static_cast<std::uint32_t>(m.vertexNeighbours.size()));
+    }
+}
+
+/// The uniform grid: cell edge about the mean triangle extent (at least 1/256 of the diagonal,
+/// at most 8 cells per triangle overall), each triangle listed in every cell its box overlaps.
+void buildGrid(TriangleMesh& m)
+{
+    Real meanExtent = 0;
+    for (const auto& t : m.triangles)
+    {
+        Vec3 lo = m.vertices[t[0]], hi = lo;
+        for (int c = 1; c < 3; ++c)
+        {
+            const Vec3& v = m.vertices[t[c]];
+            lo = {std::fmin(lo.x, v.x), std::fmin(lo.y, v.y), std::fmin(lo.z, v.z)};
+            hi = {std::fmax(hi.x, v.x), std::fmax(hi.y, v.y), std::fmax(hi.z, v.z)};
+        }
+        meanExtent += std::fmax(hi.x - lo.x, std::fmax(hi.y - lo.y, hi.z - lo.z));
+    }
+    meanExtent /= Real(m.triangles.size());
+    const Vec3 extent = m.upper - m.lower;
+    Real cell = std::fmax(meanExtent, m.size / 256);
+    const auto count = [&](Real c)
+    {
+        return std::array<int, 3>{1 + static_cast<int>(extent.x / c), 1 + static_cast<int>(extent.y / c),
+                                  1 + static_cast<int>(extent.z / c)};
+    };
+    std::array<int, 3> n = count(cell);
+    const double budget = 8.0 * Real(m.triangles.size()) + 64;
+    while (double(n[0]) * n[1] * n[2] > budget)
+    {
+        cell *= 1.25;
+        n = count(cell);
+    }
+    m.cell = cell;
+    m.cells = n;
+    m.gridOrigin = m.lower;
+    const std::size_t total = std::size_t(n[0]) * n[1] * n[2];
+    std::vector<std::vector<std::uint32_t>> lists(total);
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    {
+        Vec3 lo = m.vertices[m.triangles[t][0]], hi = lo;
+        for (int c = 1; c < 3; ++c)
+        {
+            const Vec3& v = m.vertices[m.triangles[t][c]];
+            lo = {std::fmin(lo.x, v.x), std::fmin(lo.y, v.y), std::fmin(lo.z, v.z)};
+            hi = {std::fmax(hi.x, v.x), std::fmax(hi.y, v.y), std::fmax(hi.z, v.z)};
+        }
+        const auto index = [&](Real value, Real origin, int cells)
+        { return std::clamp(static_cast<int>((value - origin) / cell), 0, cells - 1); };
+        for (int i = index(lo.x, m.lower.x, n[0]); i <= index(hi.x, m.lower.x, n[0]); ++i)
+            for (int j = index(lo.y, m.lower.y, n[1]); j <= index(hi.y, m.lower.y, n[1]); ++j)
+                for (int k = index(lo.z, m.lower.z, n[2]); k <= index(hi.z, m.lower.z, n[2]); ++k)
+                    lists[(std::size_t(k) * n[1] + j) * n[0] + i].push_back(static_cast<std::uint32_t>(t));
+    }
+    m.cellStart.assign(1, 0);
+    for (const auto& l : lists)
+    {
+        m.cellTriangles.insert(m.cellTriangles.end(), l.begin(), l.end());
+        m.cellStart.push_back(static_cast<std::uint32_t>(m.cellTriangles.size()));
+    }
+}
+
+} // namespace
+
+TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::string& source,
+                               MeshReport& report)
+{
+    if (corners.empty() || corners.size() % 3 != 0)
+        throw InputError(source + ": the mesh has no triangles");
+    TriangleMesh m;
+    std::map<Vec3, std::uint32_t, VertexOrder> weld;
+    m.lower = m.upper = corners[0];
+    for (const Vec3& c : corners)
+    {
+        if (!isFinite(c))
+            throw InputError(source + ": a vertex coordinate is not finite");
+        m.lower = {std::fmin(m.lower.x, c.x), std::fmin(m.lower.y, c.y), std::fmin(m.lower.z, c.z)};
+        m.upper = {std::fmax(m.upper.x, c.x), std::fmax(m.upper.y, c.y), std::fmax(m.upper.z, c.z)};
+    }
+    m.size = length(m.upper - m.lower);
+    const Real minTwiceArea = 1e-12 * m.size * m.size;
+    for (std::size_t t = 0; t < corners.size() / 3; ++t)
+    {
+        std::array<std::uint32_t, 3> tri{};
+        for (int c = 0; c < 3; ++c)
+        {
+            const auto [it, added] =
+                weld.try_emplace(corners[3 * t + c], static_cast<std::uint32_t>(m.vertices.size()));
+            if (added)
+                m.vertices.push_back(corners[3 * t + c]);
+            tri[c] = it->second;
+        }
+        const Vec3 n =
+            cross(m.vertices[tri[1]] - m.vertices[tri[0]], m.vertices[tri[2]] - m.vertices[tri[0]]);
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(length(n) > minTwiceArea))
+            throw InputError(source + ": triangle " + std::to_string(t) +
+                             " is degenerate (zero area relative to the mesh size)");
+        m.triangles.push_back(tri);
+        m.normals.push_back(n / length(n));
+    }
+    m.inward.resize(m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+        for (int e = 0; e < 3; ++e)
+        {
+            const Vec3& a = m.vertices[m.triangles[t][e]];
+            const Vec3& b = m.vertices[m.triangles[t][(e + 1) % 3]];
+            const Vec3& w = m.vertices[m.triangles[t][(e + 2) % 3]];
+            const Vec3 u = (b - a) / length(b - a);
+            m.inward[t][e] = normalizedOrZero((w - a) - dot(w - a, u) * u);
+        }
+    buildEdges(m);
+    std::size_t open = 0, nonManifold = 0, example = 0;
+    for (std::size_t g = 0; g < m.edges.size(); ++g)
+    {
+        const std::uint32_t users = m.edgeStart[g + 1] - m.edgeStart[g];
+        if (users == 1)
+            ++open;
+        else if (users > 2 && nonManifold++ == 0)
+            example = g;
+    }
+    if (open > 0)
+        report.warnings.push_back(source + ": open boundary of " + std::to_string(open) + " edges");
+    if (nonManifold > 0)
+    {
+        const Vec3& a = m.vertices[m.edges[example][0]];
+        const Vec3& b = m.vertices[m.edges[example][1]];
+        report.warnings.push_back(
+            source + ": " + std::to_string(nonManifold) +
+            " non-manifold edges (used by 3 or more triangles), e.g. the edge of triangle " +
+            std::to_string(m.edgeUsers[m.edgeStart[example]] / 3) + " from (" + std::to_string(a.x) + ", " +
+            std::to_string(a.y) + ", " + std::to_string(a.z) + ") to (" + std::to_string(b.x) + ", " +
+            std::to_string(b.y) + ", " + std::to_string(b.z) + ")");
+    }
+    buildGrid(m);
+    return m;
+}
+
+Real TriangleMesh::farthestVertex(const Vec3& point) const
+{
+    Real far = 0;
+    for (const Vec3& v : vertices)
+        far = std::fmax(far, length(v - point));
+    return far;
+}
+
+void TriangleMesh::trianglesNear(const Vec3& low, const Vec3& high, std::vector<std::uint32_t>& out) const
+{
+    out.clear();
+    if (high.x < lower.x || high.y < lower.y || high.z < lower.z || low.x > upper.x || low.y > upper.y ||
+        low.z > upper.z || !isFinite(low) || !isFinite(high))
+        return;
+    const auto index = [&](Real value, Real origin, int n)
+    { return std::clamp(static_cast<int>((value - origin) / cell), 0, n - 1); };
+    const int i0 = index(low.x, gridOrigin.x, cells[0]), i1 = index(high.x, gridOrigin.x, cells[0]);
+    const int j0 = index(low.y, gridOrigin.y, cells[1]), j1 = index(high.y, gridOrigin.y, cells[1]);
+    const int k0 = index(low.z, gridOrigin.z, cells[2]), k1 = index(high.z, gridOrigin.z, cells[2]);
+    for (int k = k0; k <= k1; ++k)
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i)
+            {
+                const std::size_t c = (std::size_t(k) * cells[1] + j) * cells[0] + i;
+                out.insert(out.end(), cellTriangles.begin() + cellStart[c],
+                           cellTriangles.begin() + cellStart[c + 1]);
+            }
+    if (i0 != i1 || j0 != j1 || k0 != k1)
+    {
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+}
+
+std::size_t TriangleMesh::memoryBytes() const
+{
+    auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+    return bytes(vertices) + bytes(triangles) + bytes(normals) + bytes(triangleEdges) + bytes(inward) +
+           bytes(edges) + bytes(edgeStart) + bytes(edgeUsers) + bytes(vertexStart) + bytes(vertexNeighbours) +
+           bytes(cellStart) + bytes(cellTriangles);
+}
+
+TrianglePoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const Real d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0)
+        return {a, MeshFeature::Vertex, 0};
+    const Vec3 bp = p - b;
+    const Real d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3)
+        return {b, MeshFeature::Vertex, 1};
+    const Real vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        return {a + (d1 / (d1 - d3)) * ab, MeshFeature::Edge, 0};
+    const Vec3 cp = p - c;
+    const Real d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6)
+        return {c, MeshFeature::Vertex, 2};
+    const Real vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        return {a + (d2 / (d2 - d6)) * ac, MeshFeature::Edge, 2};
+    const Real va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return {b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b), MeshFeature::Edge, 1};
+    const Real denominator = 1 / (va + vb + vc);
+    return {a + (vb * denominator) * ab + (vc * denominator) * ac, MeshFeature::Face, 0};
+}
+
+} // namespace veridem::dem
