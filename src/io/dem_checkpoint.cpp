@@ -79,6 +79,8 @@ struct CheckpointAccess
         out.array("wcRS", h.rolling);
         out.array("wcSt", w.start);
         out.array("wcDB", w.wallDisplacementAtBuild_);
+        out.array("wcMN", w.meshNormal);
+        out.array("wcTB", w.wallTurnAtBuild_);
     }
 
     static void read(io::CheckpointReader& in, WallContactList& w, ContactHistoryStore& h,
@@ -91,11 +93,15 @@ struct CheckpointAccess
         in.array("wcRS", h.rolling);
         in.array("wcSt", w.start);
         in.array("wcDB", w.wallDisplacementAtBuild_);
+        in.array("wcMN", w.meshNormal);
+        in.array("wcTB", w.wallTurnAtBuild_);
         const std::size_t slots = w.particle.size();
         bool ok = w.wall.size() == slots && h.spring.size() == slots &&
                   h.rolling.size() == (h.keepRolling ? slots : h.rolling.size()) &&
                   (h.rolling.empty() || h.rolling.size() == slots) && w.start.size() == particles + 1 &&
-                  w.wallDisplacementAtBuild_.size() <= walls;
+                  w.wallDisplacementAtBuild_.size() <= walls &&
+                  (w.meshNormal.empty() || w.meshNormal.size() == slots) &&
+                  (w.wallTurnAtBuild_.empty() || w.wallTurnAtBuild_.size() == walls);
         ok = ok && below(w.particle, particles) && below(w.wall, walls) && offsets(w.start, slots);
         if (!ok)
             in.fail("is corrupt: the wall-contact list does not fit the scene");
@@ -275,19 +281,27 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
     out.array("flOc", f.removed);
     out.array("flOm", f.removedMass);
 
-    std::vector<Vec3> displacement, velocity, angularVelocity;
-    std::vector<Real> clock;
+    std::vector<Vec3> displacement, velocity, angularVelocity, rotation;
+    std::vector<Real> clock, turned;
     for (const dem::Wall& w : world.walls)
     {
         displacement.push_back(w.displacement);
         velocity.push_back(w.motion.velocity);
         angularVelocity.push_back(w.motion.angularVelocity);
         clock.push_back(w.clock);
+        // A mesh wall's frame (its rows of R) and accumulated angle; the identity for the others.
+        const auto* mesh = std::get_if<dem::MeshShape>(&w.shape);
+        const dem::MeshShape identity;
+        for (const Vec3& row : (mesh ? mesh : &identity)->rotation)
+            rotation.push_back(row);
+        turned.push_back(mesh ? mesh->turned : 0);
     }
     out.array("wDis", displacement);
     out.array("wVel", velocity);
     out.array("wAng", angularVelocity);
     out.array("wClk", clock);
+    out.array("wRot", rotation);
+    out.array("wTrn", turned);
 
     dem::CheckpointAccess::write(out, world.neighbors, world.pairHistory);
     dem::CheckpointAccess::write(out, world.wallContacts, world.wallHistory);
@@ -364,13 +378,15 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
             in.fail("is corrupt: a particle names material " + std::to_string(m));
     p.refreshPositionRadius();
 
-    std::vector<Vec3> displacement, velocity, angularVelocity;
-    std::vector<Real> clock;
+    std::vector<Vec3> displacement, velocity, angularVelocity, rotation;
+    std::vector<Real> clock, turned;
     const std::size_t walls = world.walls.size();
     readSized(in, "wDis", displacement, walls);
     readSized(in, "wVel", velocity, walls);
     readSized(in, "wAng", angularVelocity, walls);
     readSized(in, "wClk", clock, walls);
+    readSized(in, "wRot", rotation, 3 * walls);
+    readSized(in, "wTrn", turned, walls);
     for (std::size_t k = 0; k < walls; ++k)
     {
         dem::Wall& w = world.walls[k];
@@ -378,6 +394,11 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
         w.motion.velocity = velocity[k];
         w.motion.angularVelocity = angularVelocity[k];
         w.clock = clock[k];
+        if (auto* mesh = std::get_if<dem::MeshShape>(&w.shape))
+        {
+            mesh->rotation = {rotation[3 * k], rotation[3 * k + 1], rotation[3 * k + 2]};
+            mesh->turned = turned[k];
+        }
     }
 
     dem::CheckpointAccess::read(in, world.neighbors, world.pairHistory, n);

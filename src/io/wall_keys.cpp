@@ -1,5 +1,6 @@
 #include "io/wall_keys.h"
 
+#include "core/constants.h"
 #include "io/surface_mesh_reader.h"
 
 #include <cmath>
@@ -140,6 +141,70 @@ std::vector<dem::Wall> cylinderCaps(const dem::Wall& cylinder)
     caps[1].name = cylinder.name + "/cap1";
     caps[1].shape = dem::PlaneShape{c.point + c.length * c.axis, -facing * c.axis, c.radius};
     return caps;
+}
+
+dem::Wall readWall(TableReader& t, const dem::World& world)
+{
+    dem::Wall wall;
+    wall.name = t.requiredString("name");
+    const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish", "cylinder", "mesh"});
+    wall.material = world.materialId(t.requiredString("material"));
+    if (type == "plane")
+    {
+        dem::PlaneShape plane;
+        plane.point = t.vec3("point", {});
+        const Vec3 normal = t.requiredVec3("normal");
+        if (!(length(normal) > 0))
+            t.fail("normal", "must be a non-zero vector");
+        plane.normal = normal / length(normal);
+        wall.shape = plane;
+        wall.motion.velocity = t.vec3("velocity", {});
+        wall.motion.oscillationAmplitude = t.vec3("oscillation_amplitude", {});
+        wall.motion.oscillationAngularFrequency = t.number("oscillation_omega", 0.0);
+        if (wall.motion.oscillationAngularFrequency < 0)
+            t.fail("oscillation_omega", "must be >= 0 rad/s");
+        if (wall.motion.oscillationAngularFrequency > 0 && length(wall.motion.velocity) > 0)
+            t.fail("oscillation_omega", "an oscillating plane cannot also have a steady velocity");
+        const Real omega = t.number("omega", 0.0);
+        wall.motion.angularVelocity = omega * plane.normal;
+        wall.motion.rotationCentre = plane.point;
+    }
+    else if (type == "turntable")
+    {
+        dem::PlaneShape disk;
+        disk.point = t.vec3("centre", {});
+        disk.diskRadius = t.requiredNumber("radius");
+        t.requirePositive("radius", disk.diskRadius, "m");
+        const Real tilt = t.number("tilt_degrees", 0.0);
+        const Real downhill = t.number("downhill_degrees", 0.0);
+        if (!(std::fabs(tilt) < 90))
+            t.fail("tilt_degrees", "must be in (-90, 90) degrees");
+        disk.normal = dem::tiltedNormal(degToRad(tilt), degToRad(downhill));
+        wall.shape = disk;
+        wall.motion.angularVelocity = t.number("omega", 0.0) * disk.normal;
+        wall.motion.rotationCentre = disk.point;
+    }
+    else if (type == "cylinder")
+        static_cast<void>(readCylinder(t, wall)); // (caps: readDemScene adds them)
+    else if (type == "mesh")
+    {
+        readMeshWall(t, wall);
+        if (t.has("omega_table")) // (a mesh turns its frame by the constant omega in moveWalls)
+            t.fail("omega_table", "is not available for a mesh wall: give a constant 'omega' vector [rad/s]");
+    }
+    else
+    {
+        dem::DishShape dish;
+        dish.lowestPoint = t.vec3("lowest_point", {});
+        dish.sphereRadius = t.requiredNumber("sphere_radius");
+        t.requirePositive("sphere_radius", dish.sphereRadius, "m");
+        wall.shape = dish;
+        wall.motion.angularVelocity = {0, 0, t.number("omega", 0.0)};
+        wall.motion.rotationCentre = dish.lowestPoint;
+    }
+    readCommonWallKeys(t, wall, symmetryAxis(wall));
+    t.finish();
+    return wall;
 }
 
 } // namespace veridem::io

@@ -4,12 +4,18 @@
 #pragma once
 
 #include "dem/walls/wall.h"
+#include "dem/world.h"
 #include "io/toml_reader.h"
 
 #include <vector>
 
 namespace veridem::io
 {
+
+/// One [[wall]] table: its type's shape and motion, then the keys shared by every type
+/// (readCommonWallKeys); materials are looked up in `world`. A capped cylinder's caps are not
+/// added here (cylinderCaps).
+dem::Wall readWall(TableReader& t, const dem::World& world);
 
 /// The axis a wall may rotate about: its shape's symmetry axis (plane normal, cylinder axis, the
 /// dish's vertical).

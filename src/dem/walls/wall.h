@@ -22,8 +22,8 @@
 #include "core/hot.h"
 #include "core/vec3.h"
 #include "dem/walls/cylinder.h"
-#include "dem/walls/motion_table.h"
 #include "dem/walls/mesh_wall.h"
+#include "dem/walls/motion_table.h"
 
 #include <cmath>
 #include <cstdint>
@@ -50,7 +50,7 @@ struct DishShape
 struct WallMotion
 {
     Vec3 velocity;        // translation [m/s]
-    Vec3 angularVelocity; // [rad/s], along the shape's symmetry axis
+    Vec3 angularVelocity; // [rad/s], along an analytic shape's symmetry axis; any axis for a mesh
     Vec3 rotationCentre;  // a point of the rotation axis at t = 0 [m] (moves with the translation)
     // Sinusoidal translation (vibrating plate): displacement A sin(Omega t) with amplitude vector
     // A [m] and angular frequency Omega [rad/s] (> 0 switches it on). The step then sets
