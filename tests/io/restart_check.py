@@ -25,51 +25,12 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from restart_support import RestartCheck, nonzero_doubles, records  # noqa: E402
+
 veridem, scene3d, scene2d, out = sys.argv[1:5]
-shutil.rmtree(out, ignore_errors=True)
-os.makedirs(out)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
-
-
-def run(scene, directory, *extra, expect=0):
-    command = [veridem, "run", scene, "--quiet", "--out", f"{out}/{directory}", *extra]
-    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    check(result.returncode == expect,
-          f"{' '.join(command)}: exit {result.returncode}, expected {expect}: {result.stderr.strip()}")
-    return result
-
-
-def records(path):
-    """The checkpoint's records, {tag: bytes}, after checking the container's framing."""
-    data = open(path, "rb").read()
-    assert data[:8] == b"VDMCKPT\0", path
-    payload = struct.unpack_from("<Q", data, len(data) - 24)[0]
-    assert payload == len(data) - 32 - 24 and data[-8:] == b"VDMCKEND", path
-    result, k = {}, 32
-    while k < len(data) - 24:
-        tag = data[k:k + 4].decode()
-        size, count = struct.unpack_from("<IQ", data, k + 4)
-        result[tag] = data[k + 16:k + 16 + size * count]
-        k += 16 + size * count
-    return result
-
-
-def same_state(a, b, what):
-    ra, rb = records(a), records(b)
-    differ = [t for t in ra if t not in ("csvB",) and ra[t] != rb.get(t)]
-    check(not differ and ra.keys() == rb.keys(), f"{what}: records differ: {differ}")
-
-
-def same_files(a, b, names, what):
-    for name in names:
-        check(open(f"{out}/{a}/{name}", "rb").read() == open(f"{out}/{b}/{name}", "rb").read(),
-              f"{what}: {name} differs")
+rc = RestartCheck(veridem, out)
+check, run, same_state, same_files, failures = rc.check, rc.run, rc.same_state, rc.same_files, rc.failures
 
 
 def signal_when_stepping(process, directory, sig):
@@ -82,10 +43,6 @@ def signal_when_stepping(process, directory, sig):
             break
         time.sleep(0.02)
     process.send_signal(sig)
-
-
-def nonzero_doubles(blob):
-    return sum(1 for (v,) in struct.iter_unpack("<d", blob) if v != 0)
 
 
 # ---- 3D ----

@@ -9,26 +9,18 @@ checkpoint, format version 4). The run is checked to insert and remove particles
 usage: /usr/bin/python3 restart_flow_check.py VERIDEM SCENE OUT_DIR
 """
 import os
-import shutil
-import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from restart_support import RestartCheck  # noqa: E402
+
 veridem, scene, out = sys.argv[1:4]
-shutil.rmtree(out, ignore_errors=True)
-os.makedirs(out)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
+rc = RestartCheck(veridem, out)
+check = rc.check
 
 
 def run(directory, *extra):
-    command = [veridem, "run", scene, "--quiet", "--out", f"{out}/{directory}", *extra]
-    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    check(result.returncode == 0, f"{' '.join(command)}: exit {result.returncode}: {result.stderr.strip()}")
+    rc.run(scene, directory, *extra)
 
 
 run("straight", "--threads", "1")
@@ -50,5 +42,4 @@ for line in open(f"{out}/straight/particles.csv").read().splitlines()[1:]:
     ids.add(int(line.split(",")[1]))
 check(len(ids) > 600, f"only {len(ids)} ids over the run: too few insertions")
 
-print("restart with insertion: " + ("OK" if not failures else f"{len(failures)} failure(s)"))
-sys.exit(1 if failures else 0)
+sys.exit(rc.finish("restart with insertion"))

@@ -9,43 +9,19 @@ thermo.csv and walls.csv, byte for byte. The run is checked to carry mesh contac
 usage: /usr/bin/python3 restart_mesh_check.py VERIDEM SCENE OUT_DIR
 """
 import os
-import shutil
 import struct
-import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from restart_support import RestartCheck, nonzero_doubles, records  # noqa: E402
+
 veridem, scene, out = sys.argv[1:4]
-shutil.rmtree(out, ignore_errors=True)
-os.makedirs(out)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAIL:", message)
+rc = RestartCheck(veridem, out)
+check = rc.check
 
 
 def run(directory, *extra):
-    command = [veridem, "run", scene, "--quiet", "--out", f"{out}/{directory}", *extra]
-    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    check(result.returncode == 0, f"{' '.join(command)}: exit {result.returncode}: {result.stderr.strip()}")
-
-
-def records(path):
-    """The checkpoint's records, {tag: bytes} (container framing as in restart_check.py)."""
-    data = open(path, "rb").read()
-    result, k = {}, 32
-    while k < len(data) - 24:
-        tag = data[k:k + 4].decode()
-        size, count = struct.unpack_from("<IQ", data, k + 4)
-        result[tag] = data[k + 16:k + 16 + size * count]
-        k += 16 + size * count
-    return result
-
-
-def nonzero_doubles(blob):
-    return sum(1 for (v,) in struct.iter_unpack("<d", blob) if v != 0)
+    rc.run(scene, directory, *extra)
 
 
 run("straight", "--threads", "1")
@@ -57,13 +33,7 @@ check(springs > 20 and normals > 20, "too little mesh contact history to test")
 for stop in (3337, 6000):
     run(f"split{stop}", "--threads", "1", "--stop-at-step", str(stop))
     run(f"split{stop}", "--threads", "2", "--restart", f"{out}/split{stop}/checkpoint.bin")
-    other = records(f"{out}/split{stop}/checkpoint.bin")
-    differ = [t for t in final if t != "csvB" and final[t] != other.get(t)]
-    check(not differ, f"stopped at {stop}: final checkpoint records differ: {differ}")
-    for name in ("particles.csv", "thermo.csv", "walls.csv"):
-        a = open(f"{out}/straight/{name}", "rb").read()
-        b = open(f"{out}/split{stop}/{name}", "rb").read()
-        check(a == b, f"stopped at {stop}: {name} differs from the straight run's")
+    rc.same_state(f"{out}/straight/checkpoint.bin", f"{out}/split{stop}/checkpoint.bin", f"stopped at {stop}")
+    rc.same_files("straight", f"split{stop}", ("particles.csv", "thermo.csv", "walls.csv"), f"stopped at {stop}")
 
-print("restart with a mesh wall: " + ("OK" if not failures else f"{len(failures)} failure(s)"))
-sys.exit(1 if failures else 0)
+sys.exit(rc.finish("restart with a mesh wall"))
