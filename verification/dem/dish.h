@@ -24,6 +24,7 @@
 #pragma once
 
 #include "dem/walls/wall.h"
+#include "mesh_floors.h"
 #include "support.h"
 
 namespace veridem::verify
@@ -36,7 +37,12 @@ struct DishSetup
     Real omega = 0.9;         // [rad/s]
     Real releaseRadius = 1.0; // horizontal radius of the ball centre at release [m]
     bool twist = true;        // rolling torque resists twist (engine default)
+    Real meshEdge = 0;        // > 0: the dish as a triangle mesh of this edge [m] (meshedSphericalCap)
 };
+
+/// Polar angle [rad] from the bottom up to which a meshed dish is built: 86 deg, a ball-centre
+/// height of 18.6 m, above h_c* at every Omega of the meshed case (17.54 m at 2 rad/s).
+inline constexpr Real kMeshedDishPolar = 86.0 * kPi / 180.0;
 
 /// Ball-centre equilibrium height h_c* [m] (0 below Omega_c).
 inline Real dishEquilibriumHeight(Real omega, Real g = kG)
@@ -50,9 +56,12 @@ inline World dishWorld(const DishSetup& s)
     Material ball = dishBall();
     ball.rollingTwist = s.twist;
     World world = worldWith(ball, {0, 0, -kG});
-    dem::Wall dish;
+    const Vec3 sphereCentre{0, 0, kDishRadius};
+    dem::Wall dish = s.meshEdge > 0 ? meshedSphericalCap(sphereCentre, kDishRadius, kMeshedDishPolar, s.meshEdge)
+                                    : dem::Wall{};
     dish.name = "dish";
-    dish.shape = dem::DishShape{{0, 0, 0}, kDishRadius};
+    if (s.meshEdge <= 0)
+        dish.shape = dem::DishShape{{0, 0, 0}, kDishRadius};
     dish.motion.angularVelocity = {0, 0, s.omega};
     dish.motion.rotationCentre = {0, 0, kDishRadius};
     world.walls.push_back(dish);
@@ -62,8 +71,14 @@ inline World dishWorld(const DishSetup& s)
     const Real rhoS = kDishRadius - a;
     const Real cosTheta = std::sqrt(1 - (s.releaseRadius / rhoS) * (s.releaseRadius / rhoS));
     const Real distance = rhoS + m * kG * cosTheta / ball.normalStiffness; // equilibrium overlap
-    const Vec3 x{-s.releaseRadius, 0,
-                 kDishRadius - std::sqrt(distance * distance - s.releaseRadius * s.releaseRadius)};
+    Vec3 x{-s.releaseRadius, 0, kDishRadius - std::sqrt(distance * distance - s.releaseRadius * s.releaseRadius)};
+    if (s.meshEdge > 0)
+    {
+        // A facet lies inside the sphere by up to its sag (edge^2 / (8 R) = 0.4 mm at 0.25 m): put
+        // the ball at the same equilibrium overlap on the facet under it, along the facet's normal.
+        const dem::WallGap gap = dem::wallGap(std::get<dem::MeshShape>(dish.shape), {}, x, a);
+        x += (gap.overlap - m * kG * gap.normal.z / ball.normalStiffness) * gap.normal;
+    }
     world.particles.add(x, {}, {}, a, ball.density, 0);
     dem::prepare(world);
     return world;

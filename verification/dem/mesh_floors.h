@@ -28,11 +28,12 @@ class Jitter
     std::uint64_t state_ = 0x9e3779b97f4a7c15ull;
 };
 
-inline dem::Wall meshWall(const std::string& name, const std::vector<Vec3>& corners)
+inline dem::Wall meshWall(const std::string& name, const std::vector<Vec3>& corners, const Vec3& pivot = {})
 {
-    dem::MeshReport report; // (open boundary: expected for a floor or a disk)
+    dem::MeshReport report; // (open boundary: expected for a floor, a disk or a cap)
     dem::MeshShape shape;
     shape.mesh = std::make_shared<const dem::TriangleMesh>(dem::buildTriangleMesh(corners, name, report));
+    shape.pivot = pivot;
     shape.farthestVertex = shape.mesh->farthestVertex(shape.pivot);
     dem::Wall wall;
     wall.name = name;
@@ -131,6 +132,85 @@ inline dem::Wall meshedDisk(Real radius, const Vec3& e1, const Vec3& e2, int rin
             }
         }
     return meshWall("meshed disk", corners);
+}
+
+/// Triangles joining two rings of points (each a closed loop of increasing angle, the first points
+/// at angles `startA` <= `startB` < startA + 2 pi / a.size() [rad]): a zipper that always advances
+/// the ring whose next point comes first in angle, so rings of different counts are joined by
+/// near-equilateral triangles when the counts follow the rings' lengths.
+inline void zipRings(const std::vector<Vec3>& a, Real startA, const std::vector<Vec3>& b, Real startB,
+                     std::vector<Vec3>& corners)
+{
+    const std::size_t na = a.size(), nb = b.size();
+    std::size_t i = 0, j = 0;
+    const auto angleA = [&](std::size_t k) { return startA + 2 * kPi * Real(k) / Real(na); };
+    const auto angleB = [&](std::size_t k) { return startB + 2 * kPi * Real(k) / Real(nb); };
+    while (i < na || j < nb)
+        if (j == nb || (i < na && angleA(i + 1) < angleB(j + 1)))
+        {
+            corners.insert(corners.end(), {a[i % na], a[(i + 1) % na], b[j % nb]});
+            ++i;
+        }
+        else
+        {
+            corners.insert(corners.end(), {a[i % na], b[(j + 1) % nb], b[j % nb]});
+            ++j;
+        }
+}
+
+/// The inside of the sphere of radius R [m] centred at `centre`, from its lowest point up to the
+/// polar angle `maxPolar` [rad] from the bottom, in rings of near-equilateral triangles of edge
+/// about `edge` [m]: ring k at polar angle k edge / R holds round(2 pi R sin / edge) nodes (at
+/// least 6), each ring turned by a random fraction of its step, rings joined by zipRings. The
+/// wall's pivot is the sphere's centre. A facet's normal departs from the sphere's normal at its
+/// points by at most about its circumradius / R (largestFacetTilt measures it).
+inline dem::Wall meshedSphericalCap(const Vec3& centre, Real radius, Real maxPolar, Real edge)
+{
+    Jitter random;
+    const int rings = int(std::ceil(maxPolar * radius / edge));
+    const Real step = maxPolar / rings;
+    const auto point = [&](Real polar, Real azimuth) {
+        return centre + radius * Vec3{std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                                      -std::cos(polar)};
+    };
+    std::vector<Vec3> corners, previous{point(0, 0)};
+    Real previousStart = 0;
+    for (int k = 1; k <= rings; ++k)
+    {
+        const Real polar = k * step;
+        const int count = std::max(6, int(std::lround(2 * kPi * radius * std::sin(polar) / edge)));
+        const Real angularStep = 2 * kPi / count;
+        // The first node lies in [previousStart, previousStart + angularStep), as zipRings needs.
+        const Real start = previousStart + angularStep * 0.5 * (1 + random.next());
+        std::vector<Vec3> ring;
+        for (int q = 0; q < count; ++q)
+            ring.push_back(point(polar, start + q * angularStep));
+        if (previous.size() == 1)
+            for (int q = 0; q < count; ++q)
+                corners.insert(corners.end(), {previous[0], ring[std::size_t(q)], ring[std::size_t((q + 1) % count)]});
+        else
+            zipRings(previous, previousStart, ring, start, corners);
+        previous = std::move(ring);
+        previousStart = start;
+    }
+    return meshWall("meshed spherical cap", corners, centre);
+}
+
+/// The largest angle [rad] between a triangle's normal and the sphere's normal (from `centre`) at
+/// the triangle's corners: the facet error of a meshed sphere (the sphere normal turns most across
+/// a facet between its corners).
+inline Real largestFacetTilt(const dem::Wall& wall, const Vec3& centre)
+{
+    const auto& mesh = *std::get<dem::MeshShape>(wall.shape).mesh;
+    Real largest = 0;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (const std::uint32_t v : mesh.triangles[t])
+        {
+            const Vec3 radial = mesh.vertices[v] - centre;
+            const Real c = std::fabs(dot(mesh.normals[t], radial)) / length(radial);
+            largest = std::fmax(largest, std::acos(std::fmin(Real(1), c)));
+        }
+    return largest;
 }
 
 } // namespace veridem::verify
