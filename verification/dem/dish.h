@@ -57,8 +57,9 @@ inline World dishWorld(const DishSetup& s)
     ball.rollingTwist = s.twist;
     World world = worldWith(ball, {0, 0, -kG});
     const Vec3 sphereCentre{0, 0, kDishRadius};
-    dem::Wall dish = s.meshEdge > 0 ? meshedSphericalCap(sphereCentre, kDishRadius, kMeshedDishPolar, s.meshEdge)
-                                    : dem::Wall{};
+    dem::Wall dish = s.meshEdge > 0
+                         ? meshedSphericalCap(sphereCentre, kDishRadius, kMeshedDishPolar, s.meshEdge)
+                         : dem::Wall{};
     dish.name = "dish";
     if (s.meshEdge <= 0)
         dish.shape = dem::DishShape{{0, 0, 0}, kDishRadius};
@@ -71,7 +72,8 @@ inline World dishWorld(const DishSetup& s)
     const Real rhoS = kDishRadius - a;
     const Real cosTheta = std::sqrt(1 - (s.releaseRadius / rhoS) * (s.releaseRadius / rhoS));
     const Real distance = rhoS + m * kG * cosTheta / ball.normalStiffness; // equilibrium overlap
-    Vec3 x{-s.releaseRadius, 0, kDishRadius - std::sqrt(distance * distance - s.releaseRadius * s.releaseRadius)};
+    Vec3 x{-s.releaseRadius, 0,
+           kDishRadius - std::sqrt(distance * distance - s.releaseRadius * s.releaseRadius)};
     if (s.meshEdge > 0)
     {
         // A facet lies inside the sphere by up to its sag (edge^2 / (8 R) = 0.4 mm at 0.25 m): put

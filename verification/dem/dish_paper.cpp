@@ -347,11 +347,12 @@ VERIDEM_DISH_CASE("dish_omega_7", 7.0, 1.0, (std::vector<std::string>{"dem", "pa
 VERIDEM_DISH_CASE("dish_omega_10", 10.0, 1.0, (std::vector<std::string>{"dem", "paper"}),
                   "concave dish at 10 rad/s: ball climbs to h_c* near the rim");
 
-VERIDEM_CASE({.name = "dish_mesh",
-              .summary = "concave dish at 2 rad/s as a triangle mesh: ball climbs to h_c* (facet tilt < muR')",
-              .reference = "Xiang et al. eq. 5, Figs. 10-12; BENCHMARKS 1c; Kremmer & Favier 2001",
-              .labels = {"dem", "mesh"},
-              .run = runDishMesh});
+VERIDEM_CASE(
+    {.name = "dish_mesh",
+     .summary = "concave dish at 2 rad/s as a triangle mesh: ball climbs to h_c* (facet tilt < muR')",
+     .reference = "Xiang et al. eq. 5, Figs. 10-12; BENCHMARKS 1c; Kremmer & Favier 2001",
+     .labels = {"dem", "mesh"},
+     .run = runDishMesh});
 
 VERIDEM_CASE(
     {.name = "dish_twist_regression",

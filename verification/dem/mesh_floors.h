@@ -169,9 +169,10 @@ inline dem::Wall meshedSphericalCap(const Vec3& centre, Real radius, Real maxPol
     Jitter random;
     const int rings = int(std::ceil(maxPolar * radius / edge));
     const Real step = maxPolar / rings;
-    const auto point = [&](Real polar, Real azimuth) {
-        return centre + radius * Vec3{std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
-                                      -std::cos(polar)};
+    const auto point = [&](Real polar, Real azimuth)
+    {
+        return centre + radius * Vec3{std::sin(polar) * std::cos(azimuth),
+                                      std::sin(polar) * std::sin(azimuth), -std::cos(polar)};
     };
     std::vector<Vec3> corners, previous{point(0, 0)};
     Real previousStart = 0;
@@ -187,7 +188,8 @@ inline dem::Wall meshedSphericalCap(const Vec3& centre, Real radius, Real maxPol
             ring.push_back(point(polar, start + q * angularStep));
         if (previous.size() == 1)
             for (int q = 0; q < count; ++q)
-                corners.insert(corners.end(), {previous[0], ring[std::size_t(q)], ring[std::size_t((q + 1) % count)]});
+                corners.insert(corners.end(),
+                               {previous[0], ring[std::size_t(q)], ring[std::size_t((q + 1) % count)]});
         else
             zipRings(previous, previousStart, ring, start, corners);
         previous = std::move(ring);
