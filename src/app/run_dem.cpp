@@ -259,6 +259,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     // time, so that a signal is seen soon (the bits do not depend on where the runs end).
     std::uint64_t chunk = 1;
     constexpr std::uint64_t kMaxChunk = 1024;
+    double particleSteps = 0;
     for (std::uint64_t s = world.stepCount; s < totalSteps;)
     {
         std::uint64_t runEnd = std::min({(s / outputEvery + 1) * outputEvery, s + chunk, totalSteps});
@@ -271,6 +272,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         const auto runStart = std::chrono::steady_clock::now();
         const std::uint64_t done = dem::advance(world, scene.dt, runEnd - s, scene.maxOverlapFraction);
         s += done;
+        particleSteps += double(done) * double(world.particles.size()); // (the count changes with a flow)
         if (s < runEnd || !world.health.finite || world.health.maxOverlapRatio > scene.maxOverlapFraction)
         {
             std::ostringstream m;
@@ -348,7 +350,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                 recorder.framesWritten(), options.outDir.string().c_str());
     std::printf(
         "veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour rebuilds\n",
-        wall, exec::threads(), wall > 0 ? double(stepsRun) * double(world.particles.size()) / wall : 0.0,
+        wall, exec::threads(), wall > 0 ? particleSteps / wall : 0.0,
         world.neighbors.rebuildCount());
     return 0;
 }

@@ -38,8 +38,8 @@ dem::FlowRegion readRegion(TableReader& t, bool outlet)
         region.kind = dem::FlowRegion::Kind::Cylinder;
         region.point = t.requiredVec3("point");
         region.axis = unit(t, "axis", t.vec3("axis", {0, 0, 1}));
-        region.radius = t.requiredNumber("radius");
-        t.requirePositive("radius", region.radius, "m");
+        region.radius = t.requiredNumber("region_radius"); // (not "radius": the particle radius key)
+        t.requirePositive("region_radius", region.radius, "m");
         region.length = t.requiredNumber("length");
         t.requirePositive("length", region.length, "m");
     }
