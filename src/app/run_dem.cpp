@@ -350,8 +350,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                 recorder.framesWritten(), options.outDir.string().c_str());
     std::printf(
         "veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour rebuilds\n",
-        wall, exec::threads(), wall > 0 ? particleSteps / wall : 0.0,
-        world.neighbors.rebuildCount());
+        wall, exec::threads(), wall > 0 ? particleSteps / wall : 0.0, world.neighbors.rebuildCount());
     return 0;
 }
 

@@ -42,6 +42,8 @@ Vec3 symmetryAxis(const dem::Wall& wall)
         return plane->normal;
     if (const auto* cylinder = std::get_if<dem::CylinderShape>(&wall.shape))
         return cylinder->axis;
+    if (std::holds_alternative<dem::MeshShape>(wall.shape))
+        return {};    // (none: a mesh turns about any axis through its rotation centre)
     return {0, 0, 1}; // dish
 }
 
@@ -61,19 +63,22 @@ void readCommonWallKeys(TableReader& t, dem::Wall& wall, const Vec3& axis)
             t.fail("velocity_table", "cannot be combined with an oscillation");
         m.velocity = m.velocityTable.at(0);
     }
-    m.angularVelocityTable =
-        readTable(t, "omega_table", {2, 4},
-                  [&](const std::vector<Real>& r)
-                  {
-                      if (r.size() == 2)
-                          return r[1] * axis;
-                      const Vec3 w{r[1], r[2], r[3]};
-                      const Vec3 across = w - dot(w, axis) * axis;
-                      if (length(across) > 1e-12 * length(w))
-                          t.fail("omega_table", "must be about the wall's symmetry axis (plane "
-                                                "normal, dish z, cylinder axis): give [t, w] rows");
-                      return w;
-                  });
+    m.angularVelocityTable = readTable(
+        t, "omega_table", {2, 4},
+        [&](const std::vector<Real>& r)
+        {
+            const bool anyAxis = length(axis) == 0; // a mesh
+            if (r.size() == 2 && anyAxis)
+                t.fail("omega_table", "needs [t, wx, wy, wz] rows for a mesh (it has no symmetry axis)");
+            if (r.size() == 2)
+                return r[1] * axis;
+            const Vec3 w{r[1], r[2], r[3]};
+            const Vec3 across = w - dot(w, axis) * axis;
+            if (!anyAxis && length(across) > 1e-12 * length(w))
+                t.fail("omega_table", "must be about the wall's symmetry axis (plane "
+                                      "normal, dish z, cylinder axis): give [t, w] rows");
+            return w;
+        });
     if (!m.angularVelocityTable.empty())
     {
         if (length(m.angularVelocity) > 0)
@@ -189,8 +194,6 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
     else if (type == "mesh")
     {
         readMeshWall(t, wall);
-        if (t.has("omega_table")) // (a mesh turns its frame by the constant omega in moveWalls)
-            t.fail("omega_table", "is not available for a mesh wall: give a constant 'omega' vector [rad/s]");
     }
     else
     {

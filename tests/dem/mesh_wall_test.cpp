@@ -2,6 +2,8 @@
 // surface, two in a concave corner) and the normal force against the plane's.
 #include "core/constants.h"
 #include "core/error.h"
+#include "dem/integrate.h"
+#include "dem/walls/motion_table.h"
 #include "dem/walls/wall.h"
 #include "dem/world.h"
 
@@ -223,4 +225,21 @@ TEST(MeshWall, BallInConcaveCornerFeelsBothFacesInTheForceStage)
     // damping of the half-step velocity that the contact force itself gives adds ~3e-5 of it).
     EXPECT_NEAR(f.z, 1e5 * 0.002, 1e-4 * 200);
     EXPECT_NEAR(f.x, 1e5 * 0.001, 1e-4 * 100);
+}
+
+TEST(MeshWall, OmegaTableTurnsTheMeshByItsIntegral)
+{
+    // omega_z(t) rising linearly from 0 to 2 rad/s over [0, 1] s: the turned angle is t^2, and the
+    // midpoint rule of moveWalls integrates a linear piece exactly (round-off only).
+    Wall wall;
+    wall.shape = shapeOf(square());
+    wall.motion.angularVelocityTable = MotionTable({0, 1}, {{0, 0, 0}, {0, 0, 2}});
+    std::vector<Wall> walls{wall};
+    for (int k = 0; k < 1000; ++k)
+        moveWalls(walls, 1e-3);
+    const MeshShape& s = std::get<MeshShape>(walls[0].shape);
+    EXPECT_NEAR(s.turned, 1.0, 1e-12);
+    EXPECT_NEAR(s.rotation[0].x, std::cos(1.0), 1e-12);
+    EXPECT_NEAR(std::fabs(s.rotation[0].y), std::sin(1.0), 1e-12);
+    EXPECT_NEAR(length(walls[0].motion.angularVelocity - Vec3{0, 0, 2 * (1 - 0.5e-3)}), 0, 1e-12);
 }
