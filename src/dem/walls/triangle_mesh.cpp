@@ -85,14 +85,15 @@ bool triangleMeetsCube(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
     return true;
 }
 
-/// The uniform grid: cell edge about the mean triangle extent (at least 1/256 of the diagonal,
+/// The uniform grid: cell edge about the median triangle extent (at least 1/256 of the diagonal,
 /// at most 8 cells per triangle overall), each triangle listed in every cell of its box that it
 /// meets (triangleMeetsCube: a long sliver, as in a fan of an end disk, is not listed in the many
 /// cells of its box that it misses). A triangle within r of a point meets a cell of the point's
 /// box of half-size r, so trianglesNear still gives every triangle that can touch a sphere.
 void buildGrid(TriangleMesh& m)
 {
-    Real meanExtent = 0;
+    std::vector<Real> extents;
+    extents.reserve(m.triangles.size());
     for (const auto& t : m.triangles)
     {
         Vec3 lo = m.vertices[t[0]], hi = lo;
@@ -102,11 +103,12 @@ void buildGrid(TriangleMesh& m)
             lo = {std::fmin(lo.x, v.x), std::fmin(lo.y, v.y), std::fmin(lo.z, v.z)};
             hi = {std::fmax(hi.x, v.x), std::fmax(hi.y, v.y), std::fmax(hi.z, v.z)};
         }
-        meanExtent += std::fmax(hi.x - lo.x, std::fmax(hi.y - lo.y, hi.z - lo.z));
+        extents.push_back(std::fmax(hi.x - lo.x, std::fmax(hi.y - lo.y, hi.z - lo.z)));
     }
-    meanExtent /= Real(m.triangles.size());
+    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+    const Real medianExtent = extents[extents.size() / 2];
     const Vec3 extent = m.upper - m.lower;
-    Real cell = std::fmax(meanExtent, m.size / 256);
+    Real cell = std::fmax(medianExtent, m.size / 256);
     const auto count = [&](Real c)
     {
         return std::array<int, 3>{1 + static_cast<int>(extent.x / c), 1 + static_cast<int>(extent.y / c),
