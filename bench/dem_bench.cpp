@@ -45,6 +45,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <malloc.h> // mallinfo2 (glibc)
 #include <memory>
 #include <random>
 #include <sstream>
@@ -494,6 +495,15 @@ int run(int argc, char** argv)
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
                     peak / 1e6, peak / static_cast<double>(n),
                     (peak - residentBefore) / static_cast<double>(n));
+        {
+            // The heap at the end (glibc mallinfo2): bytes in use by live allocations and bytes
+            // freed but still held, against the resident set now; peak RSS above what is in use is
+            // transient (list rebuilds) or freed memory the allocator kept.
+            const struct mallinfo2 heap = mallinfo2();
+            std::printf("  at the end: RSS %.1f MB, heap in use %.1f MB, heap free but held %.1f MB\n",
+                        currentResidentBytes() / 1e6, static_cast<double>(heap.uordblks) / 1e6,
+                        static_cast<double>(heap.fordblks) / 1e6);
+        }
         if (const double mesh = meshBytes(world); mesh > 0)
             std::printf(
                 "  mesh %.3f MB; peak RSS without it %.0f B/particle (%.0f B/particle above the empty "
