@@ -1,7 +1,8 @@
 // veridem_bench: the reference many-sphere benchmark of issue 5 (docs/performance.md).
 //
-//   veridem_bench [--scene bed|gas|turntable] [--file XYZ] [--tile N] [--steps S] [--threads T]
-//                 [--profile] [--repeat R] [--no-sort] [--no-fusion] [--spin-ns NS]
+//   veridem_bench [--scene bed|gas|turntable|drum] [--file XYZ] [--tile N] [--steps S] [--threads T]
+//                 [--warmup W] [--profile] [--repeat R] [--no-sort] [--no-fusion] [--spin-ns NS]
+//                 [--mesh STL] [--omega W] [--fill N] [--write-xyz OUT]
 //   veridem_bench --core-probe
 //
 // bed / gas: spheres read from an .xyz file (x y z per line, metres), radius 1 mm, density 2500,
@@ -11,6 +12,15 @@
 //   N x N times side by side (box N L x N L), e.g. --tile 7 gives 980,000 spheres.
 // turntable: one steel ball rolling on a turntable (the paper's Test 1 set-up with rolling
 //   friction), the cost of long single-particle verification runs.
+// drum: the bed's spheres and law inside a closed triangle-mesh drum (--mesh STL, from
+//   scripts/make_meshes.py drum: a cylinder about +y from the origin) turning at --omega rad/s
+//   about +y through the origin (default 4; 0: at rest), no other walls. The spheres come from
+//   --file, or with --fill N from a jittered cubic lattice (spacing 2.2 mm) filling the drum from
+//   the bottom. --write-xyz OUT writes the centres after the run (%.17g): a fill settled with
+//   --omega 0 is the bed that the rotating runs, here and in LIGGGHTS
+//   (bench/lammps/drum_liggghts.in), start from. Prints the bed's centre of mass and the mesh's
+//   bytes (peak RSS per particle is given without them).
+// --warmup W: W steps before the timed ones (not timed), e.g. to set a drum's bed turning.
 //
 // The particles are renumbered in Morton order of cells before the run (sortParticlesSpatially),
 // unless --no-sort. Prints particle-steps/s, peak memory (getrusage), memory per particle, the time split by
@@ -26,6 +36,7 @@
 #include "dem/world.h"
 #include "exec/isa.h"
 #include "exec/thread_pool.h"
+#include "io/surface_mesh_reader.h"
 
 #include <algorithm>
 #include <charconv>
@@ -34,6 +45,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <malloc.h> // mallinfo2 (glibc)
+#include <memory>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -52,6 +66,11 @@ struct Options
     std::string scene = "bed";
     std::string model = "linear"; // --model: the bed's contact law, "linear" or "hertz" (bedWorld)
     std::string file;
+    std::string mesh;     // --mesh: the drum's STL
+    std::string writeXyz; // --write-xyz: the centres after the run
+    double omega = 4;     // --omega: the drum's angular velocity about +y [rad/s]
+    long fill = 0;        // --fill: spheres on a lattice in the drum instead of --file
+    long warmup = 0;      // --warmup: untimed steps before the timed loop
     int tile = 1;
     long steps = 10000;
     int threads = 1;
@@ -67,9 +86,11 @@ struct Options
 {
     std::fprintf(
         stderr,
-        "usage: veridem_bench [--scene bed|gas|turntable] [--model linear|hertz] [--file XYZ] [--tile N]\n"
-        "                     [--steps S] [--threads T] [--repeat R] [--profile] [--no-sort] [--no-fusion]\n"
-        "                     [--spin-ns NS]\n"
+        "usage: veridem_bench [--scene bed|gas|turntable|drum] [--model linear|hertz] [--file XYZ] [--tile "
+        "N]\n"
+        "                     [--steps S] [--warmup W] [--threads T] [--repeat R] [--profile] [--no-sort]\n"
+        "                     [--no-fusion] [--spin-ns NS] [--mesh STL] [--omega W] [--fill N] [--write-xyz "
+        "OUT]\n"
         "       veridem_bench --core-probe   (how much of a CPU core this process gets; no run)\n");
     std::exit(2);
 }
@@ -109,6 +130,22 @@ Options parse(int argc, char** argv)
             o.tile = static_cast<int>(count());
         else if (arg == "--steps")
             o.steps = count();
+        else if (arg == "--warmup")
+            o.warmup = number(0);
+        else if (arg == "--mesh")
+            o.mesh = value();
+        else if (arg == "--write-xyz")
+            o.writeXyz = value();
+        else if (arg == "--fill")
+            o.fill = count();
+        else if (arg == "--omega")
+        {
+            const std::string text = value();
+            char* stop = nullptr;
+            o.omega = std::strtod(text.c_str(), &stop);
+            if (text.empty() || *stop != '\0' || !std::isfinite(o.omega))
+                throw std::runtime_error("--omega: expected a number [rad/s], got '" + text + "'");
+        }
         else if (arg == "--threads")
             o.threads = static_cast<int>(count());
         else if (arg == "--spin-ns")
@@ -126,8 +163,14 @@ Options parse(int argc, char** argv)
         else
             usage();
     }
-    if (o.scene != "bed" && o.scene != "gas" && o.scene != "turntable")
-        throw std::runtime_error("--scene: expected bed, gas or turntable, got '" + o.scene + "'");
+    if (o.scene != "bed" && o.scene != "gas" && o.scene != "turntable" && o.scene != "drum")
+        throw std::runtime_error("--scene: expected bed, gas, turntable or drum, got '" + o.scene + "'");
+    if (o.scene == "drum" && o.mesh.empty())
+        throw std::runtime_error("--scene drum: expected --mesh STL (scripts/make_meshes.py drum)");
+    if (o.scene == "drum" && o.fill > 0 && !o.file.empty())
+        throw std::runtime_error("--scene drum: expected --file or --fill, not both");
+    if (o.scene == "drum" && o.fill == 0 && o.file.empty())
+        throw std::runtime_error("--scene drum: expected --file XYZ or --fill N");
     if (o.model != "linear" && o.model != "hertz")
         throw std::runtime_error("--model: expected linear or hertz, got '" + o.model + "'");
     if (o.file.empty())
@@ -193,15 +236,14 @@ Wall plane(const char* name, Vec3 point, Vec3 normal)
     return w;
 }
 
-/// The reference bed (or gas) of issue 5, tiled n x n side by side.
-World bedWorld(const Options& o)
+constexpr Real kBedRadius = 1e-3, kBedDensity = 2500; // [m], [kg/m^3]
+
+/// The bed's material (--model linear or hertz).
+Material bedMaterial(const Options& o)
 {
-    const std::vector<Vec3> base = readXyz(o.file);
-    const Real box = 0.1, radius = 1e-3, density = 2500;
-    World world;
     Material m;
     m.name = "glass";
-    m.density = density;
+    m.density = kBedDensity;
     m.normalStiffness = 1000;
     m.tangentialStiffnessRatio = 2.0 / 7.0;
     m.normalDampingRate = 5955.04; // e = 0.5 for a pair of equal spheres
@@ -227,7 +269,16 @@ World bedWorld(const Options& o)
         m.tangentialDampingRatio = 2.0 / 7.0;
     }
     m.rollingModel = RollingModel::None;
-    world.addMaterial(m);
+    return m;
+}
+
+/// The reference bed (or gas) of issue 5, tiled n x n side by side.
+World bedWorld(const Options& o)
+{
+    const std::vector<Vec3> base = readXyz(o.file);
+    const Real box = 0.1, radius = kBedRadius, density = kBedDensity;
+    World world;
+    world.addMaterial(bedMaterial(o));
     world.gravity = {0, 0, -9.81};
     world.neighbors.skin = 0.5e-3;
     const Real side = box * o.tile;
@@ -242,6 +293,69 @@ World bedWorld(const Options& o)
             for (const Vec3& x : base)
                 world.particles.add(x + Vec3{tx * box, ty * box, 0}, {}, {}, radius, density, 0);
     return world;
+}
+
+/// Up to n centres of a cubic lattice (spacing 2.2 mm, jittered by up to 0.05 mm, a fixed seed)
+/// inside the closed drum [x^2 + z^2 < R^2, y in (ylo, yhi)] with 0.5 mm to spare, lowest first.
+std::vector<Vec3> drumFill(const TriangleMesh& drum, long n)
+{
+    const Real spacing = 2.2e-3, margin = kBedRadius + 0.5e-3;
+    const Real radius = 0.5 * (drum.upper.x - drum.lower.x) - margin;
+    const Real ylo = drum.lower.y + margin, yhi = drum.upper.y - margin;
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<Real> jitter(-0.05e-3, 0.05e-3);
+    std::vector<Vec3> points;
+    const int across = static_cast<int>(radius / spacing);
+    for (int iz = -across; iz <= across; ++iz)
+        for (Real y = ylo; y <= yhi; y += spacing)
+            for (int ix = -across; ix <= across; ++ix)
+            {
+                const Vec3 x{ix * spacing + jitter(random), y + jitter(random),
+                             iz * spacing + jitter(random)};
+                if (x.x * x.x + x.z * x.z < radius * radius && x.y > ylo && x.y < yhi)
+                    points.push_back(x);
+            }
+    std::stable_sort(points.begin(), points.end(), [](const Vec3& a, const Vec3& b) { return a.z < b.z; });
+    if (points.size() < static_cast<std::size_t>(n))
+        throw std::runtime_error("--fill " + std::to_string(n) + ": the drum holds only " +
+                                 std::to_string(points.size()) + " lattice sites");
+    points.resize(static_cast<std::size_t>(n));
+    return points;
+}
+
+/// The bed's spheres and law in a closed mesh drum turning about +y through the origin.
+World drumWorld(const Options& o)
+{
+    World world;
+    world.addMaterial(bedMaterial(o));
+    world.gravity = {0, 0, -9.81};
+    world.neighbors.skin = 0.5e-3;
+    MeshReport report;
+    MeshShape shape;
+    shape.mesh = std::make_shared<const TriangleMesh>(buildTriangleMesh(io::readStl(o.mesh), o.mesh, report));
+    for (const std::string& warning : report.warnings)
+        std::fprintf(stderr, "veridem_bench: warning: %s\n", warning.c_str());
+    shape.farthestVertex = shape.mesh->farthestVertex(shape.pivot);
+    Wall drum;
+    drum.name = "drum";
+    drum.motion.angularVelocity = {0, o.omega, 0};
+    const std::vector<Vec3> centres = o.fill > 0 ? drumFill(*shape.mesh, o.fill) : readXyz(o.file);
+    drum.shape = std::move(shape);
+    world.walls.push_back(std::move(drum));
+    world.particles.reserve(centres.size());
+    for (const Vec3& x : centres)
+        world.particles.add(x, {}, {}, kBedRadius, kBedDensity, 0);
+    return world;
+}
+
+/// The mesh's bytes (TriangleMesh::memoryBytes), 0 without a mesh wall.
+double meshBytes(const World& world)
+{
+    double bytes = 0;
+    for (const Wall& w : world.walls)
+        if (const auto* m = std::get_if<MeshShape>(&w.shape))
+            bytes += static_cast<double>(m->mesh->memoryBytes());
+    return bytes;
 }
 
 /// The paper's flat-turntable ball (verify::flatTurntableBall: steel, a = 6.35 mm, type A rolling
@@ -286,7 +400,7 @@ int run(int argc, char** argv)
 
     for (int r = 0; r < o.repeat; ++r)
     {
-        World world = single ? turntableWorld() : bedWorld(o);
+        World world = single ? turntableWorld() : o.scene == "drum" ? drumWorld(o) : bedWorld(o);
         const std::size_t n = world.particles.size();
         const auto setupStart = std::chrono::steady_clock::now();
         if (o.sort)
@@ -296,6 +410,8 @@ int run(int argc, char** argv)
             std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
         world.exec.profile.enabled = o.profile;
         world.exec.fusedSteps = o.fusion;
+        if (o.warmup > 0)
+            advance(world, dt, static_cast<std::uint64_t>(o.warmup)); // (not timed)
 
         const bench::CoreProbe probeBefore = bench::probeCore();
         const double cpuStart = cpuSeconds();
@@ -379,6 +495,21 @@ int run(int argc, char** argv)
         std::printf("  peak RSS %.1f MB = %.0f B/particle (%.0f B/particle above the empty process)\n",
                     peak / 1e6, peak / static_cast<double>(n),
                     (peak - residentBefore) / static_cast<double>(n));
+        {
+            // The heap at the end (glibc mallinfo2): bytes in use by live allocations and bytes
+            // freed but still held, against the resident set now; peak RSS above what is in use is
+            // transient (list rebuilds) or freed memory the allocator kept.
+            const struct mallinfo2 heap = mallinfo2();
+            std::printf("  at the end: RSS %.1f MB, heap in use %.1f MB, heap free but held %.1f MB\n",
+                        currentResidentBytes() / 1e6, static_cast<double>(heap.uordblks) / 1e6,
+                        static_cast<double>(heap.fordblks) / 1e6);
+        }
+        if (const double mesh = meshBytes(world); mesh > 0)
+            std::printf(
+                "  mesh %.3f MB; peak RSS without it %.0f B/particle (%.0f B/particle above the empty "
+                "process)\n",
+                mesh / 1e6, (peak - mesh) / static_cast<double>(n),
+                (peak - residentBefore - mesh) / static_cast<double>(n));
         const ParticleStore& store = world.particles;
         const double particleBytes =
             static_cast<double>(n * (3 * sizeof(store.position[0]) + 3 * sizeof(store.force[0]) +
@@ -416,7 +547,26 @@ int run(int argc, char** argv)
         std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n",
                     touching, static_cast<double>(touching) / static_cast<double>(n),
                     world.wallContacts.size(), wallTouching);
-        std::printf("  kinetic energy after %ld steps %.9e J\n", o.steps, kineticEnergy(world));
+        std::printf("  kinetic energy after %ld steps %.9e J\n", o.warmup + o.steps, kineticEnergy(world));
+        if (o.scene == "drum")
+        {
+            Vec3 centre;
+            for (std::size_t i = 0; i < n; ++i)
+                centre += world.particles.position[i];
+            centre = (1.0 / static_cast<Real>(n)) * centre;
+            std::printf("  centre of mass after %ld steps %.6e %.6e %.6e m\n", o.warmup + o.steps, centre.x,
+                        centre.y, centre.z);
+        }
+        if (!o.writeXyz.empty())
+        {
+            std::FILE* f = std::fopen(o.writeXyz.c_str(), "w");
+            if (f == nullptr)
+                throw std::runtime_error("cannot write " + o.writeXyz);
+            for (std::size_t i = 0; i < n; ++i)
+                std::fprintf(f, "%.17g %.17g %.17g\n", world.particles.position[i].x,
+                             world.particles.position[i].y, world.particles.position[i].z);
+            std::fclose(f);
+        }
         if (o.profile)
         {
             const StepProfile& p = world.exec.profile;

@@ -1,5 +1,6 @@
 // Google Benchmark micro-benchmarks (docs/performance.md): the contact law alone, the pair-force
-// loop (scalar and four-lane paths), the cross-block sums, and the neighbour search.
+// loop (scalar and four-lane paths), the cross-block sums, the neighbour search, and the wall
+// stage per contact on a triangle-mesh floor against an analytic plane.
 //
 //   ./build/release/bench/veridem_micro_bench [--benchmark_filter=REGEX]
 #include "dem/contact_law.h"
@@ -9,6 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -115,6 +118,79 @@ void neighbourRebuild(benchmark::State& state)
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles.size()));
 }
 BENCHMARK(neighbourRebuild)->Arg(16)->Arg(28);
+
+/// side^2 spheres (r = 1 mm, at rest, 2.5 mm apart: no pair contacts) resting on the floor z = 0
+/// with the overlap of their weight. The floor is an analytic plane or (mesh) a flat square of
+/// triangles, two per 3.1 mm cell, so that the spheres sit on faces, edges and vertices alike.
+World floorWorld(int side, bool mesh)
+{
+    World world;
+    world.addMaterial(benchMaterial());
+    world.neighbors.skin = 0.5e-3;
+    world.gravity = {0, 0, -9.81};
+    const Real spacing = 2.5e-3, radius = 1e-3, density = 2500;
+    const Real overlap = density * 4.0 / 3.0 * 3.14159265358979 * radius * radius * radius * 9.81 / 1000;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+            world.particles.add({x * spacing, y * spacing, radius - overlap}, {}, {}, radius, density, 0);
+    Wall floor;
+    floor.name = "floor";
+    if (!mesh)
+        floor.shape = PlaneShape{{0, 0, 0}, {0, 0, 1}};
+    else
+    {
+        const Real cell = 3.1e-3, start = -3e-3;
+        const int cells = static_cast<int>((side * spacing - 2 * start) / cell) + 1;
+        std::vector<Vec3> corners;
+        for (int j = 0; j < cells; ++j)
+            for (int i = 0; i < cells; ++i)
+            {
+                const Vec3 a{start + i * cell, start + j * cell, 0},
+                    b = a + Vec3{cell, 0, 0}, c = a + Vec3{cell, cell, 0}, d = a + Vec3{0, cell, 0};
+                corners.insert(corners.end(), {a, b, c, a, c, d});
+            }
+        MeshReport report; // (an open boundary: expected for a floor)
+        MeshShape shape;
+        shape.mesh = std::make_shared<const TriangleMesh>(buildTriangleMesh(corners, "floor", report));
+        shape.farthestVertex = shape.mesh->farthestVertex(shape.pivot);
+        floor.shape = std::move(shape);
+    }
+    world.walls.push_back(std::move(floor));
+    prepare(world);
+    return world;
+}
+
+/// Stage 4b (computeWallForces) on the same 4096 resting spheres, on the plane and on the mesh
+/// floor, timed back to back in each iteration so that both see the same state of the machine:
+/// ns per touching contact of each and their ratio (the target: mesh/plane <= 2).
+void wallContactMeshOverPlane(benchmark::State& state)
+{
+    World plane = floorWorld(64, false), mesh = floorWorld(64, true);
+    const std::size_t n = plane.particles.size();
+    double planeSeconds = 0, meshSeconds = 0;
+    std::size_t planeContacts = 0, meshContacts = 0;
+    using Clock = std::chrono::steady_clock;
+    for (auto _ : state)
+    {
+        const auto t0 = Clock::now();
+        planeContacts += computeWallForces(plane, 1e-5, 0, n).touching;
+        const auto t1 = Clock::now();
+        meshContacts += computeWallForces(mesh, 1e-5, 0, n).touching;
+        const auto t2 = Clock::now();
+        planeSeconds += std::chrono::duration<double>(t1 - t0).count();
+        meshSeconds += std::chrono::duration<double>(t2 - t1).count();
+        state.SetIterationTime(std::chrono::duration<double>(t2 - t0).count());
+    }
+    const double planePerContact =
+        planeSeconds / static_cast<double>(std::max<std::size_t>(planeContacts, 1));
+    const double meshPerContact = meshSeconds / static_cast<double>(std::max<std::size_t>(meshContacts, 1));
+    state.counters["plane_ns/contact"] = 1e9 * planePerContact;
+    state.counters["mesh_ns/contact"] = 1e9 * meshPerContact;
+    state.counters["mesh/plane"] = meshPerContact / planePerContact;
+    state.counters["contacts/sphere"] = static_cast<double>(meshContacts) /
+                                        static_cast<double>(n * static_cast<std::size_t>(state.iterations()));
+}
+BENCHMARK(wallContactMeshOverPlane)->UseManualTime();
 
 } // namespace
 

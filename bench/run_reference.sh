@@ -3,9 +3,11 @@
 # machine: for each scene (settled bed, gas) and each thread/rank count (1, 2), veridem, then
 # LAMMPS, then LIGGGHTS (if installed: apt-get install -y lammps liggghts), on the same input; then
 # the bed with Hertz-Mindlin contacts against LAMMPS `pair_style granular`, the 1e6-sphere bed and
-# the one-ball turntable.
+# the one-ball turntable; then, if LIGGGHTS is installed, 20,000 spheres in a rotating meshed drum.
 #
 #   bench/run_reference.sh [BUILD_DIR] [STEPS]      (defaults: build/release, 10000)
+#
+# VERIDEM_DRUM_ONLY=1 runs the drum section alone (DRUM_WARMUP: its untimed steps, default STEPS).
 #
 # VERIDEM_BASELINE_BENCH=path/to/another/veridem_bench also runs that build (e.g. an older commit)
 # on the bed (1 thread) and the turntable, for a before/after ratio in the same run.
@@ -41,7 +43,45 @@ rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
   awk '/^Loop time of/ {printf "%.4g", $12 * $9 / $4}' "$1"
 }
 
+# The meshed rotating drum (veridem_bench --scene drum; bench/lammps/drum_liggghts.in states the
+# mapping), if LIGGGHTS is installed: one STL from scripts/make_meshes.py (a closed cylinder about +y,
+# R 45 mm, L 50 mm, 96 segments: 3456 triangles) read by both codes; 20,000 of the bed's spheres
+# (law, dt, skin, gravity) filled on a lattice and settled once by veridem in the drum at rest
+# (40,000 steps; the same bits on any thread count), written as centres that both codes read
+# (xyz_to_data.py --box). Then in each code, from that bed at rest, DRUM_WARMUP steps with the drum
+# turning at 4 rad/s about +y (not timed: the bed starts turning), then STEPS timed ones; the
+# kinetic energy and the bed's centre of mass at the end say whether both ran the same physics.
+# LIGGGHTS crashes reading a mesh with `-screen none` (it prints to the absent screen), so its
+# screen goes to a file.
+drum_section() {
+  command -v liggghts > /dev/null || return 0
+  drum_warmup=${DRUM_WARMUP:-$steps}
+  drum_steps=$((drum_warmup + steps))
+  python3 "$root/scripts/make_meshes.py" drum "$work/drum.stl" --radius 0.045 --length 0.05 --segments 96 > /dev/null
+  "$bench" --scene drum --mesh "$work/drum.stl" --fill 20000 --omega 0 --steps 40000 --threads 2 \
+    --write-xyz "$work/drum.xyz" | sed -n 's/^ *kinetic/   veridem settled bed: kinetic/p'
+  python3 "$here/lammps/xyz_to_data.py" "$work/drum.xyz" "$work/drum.data" --box -0.046 0.046 -0.001 0.051 -0.046 0.046
+  for n in 1 2; do
+    echo "== drum (mesh, 4 rad/s), $n thread(s)/rank(s), $drum_warmup untimed + $steps timed steps"
+    "$bench" --scene drum --mesh "$work/drum.stl" --file "$work/drum.xyz" --warmup "$drum_warmup" \
+      --steps "$steps" --threads "$n" | sed 's/^/   veridem /'
+    echo "   LIGGGHTS before: $("$bench" --core-probe)"
+    mpirun --allow-run-as-root --oversubscribe -np "$n" liggghts -in "$here/lammps/drum_liggghts.in" \
+      -var data "$work/drum.data" -var mesh "$work/drum.stl" -var steps "$steps" -var warmup "$drum_warmup" \
+      -log "$work/liggghts.log" -screen "$work/liggghts.screen" > /dev/null 2>&1
+    echo "   LIGGGHTS $(grep '^Loop time' "$work/liggghts.log" | tail -n 1 | awk '{printf "%.4g", $12 * $9 / $4}')" \
+      "particle-steps/s  ($(grep '^Loop time' "$work/liggghts.log" | tail -n 1 | cut -d, -f1))"
+    echo "   LIGGGHTS kinetic energy (trans, rot) and centre of mass after $drum_steps steps:" \
+      "$(awk -v s="$drum_steps" '$1 == s && NF == 7 {print $3, $4, "  ", $5, $6, $7}' "$work/liggghts.log")"
+    echo "   LIGGGHTS after: $("$bench" --core-probe)"
+  done
+}
+
 echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+if [ -n "${VERIDEM_DRUM_ONLY:-}" ]; then
+  drum_section
+  exit 0
+fi
 
 if [ -n "${VERIDEM_ROUNDS:-}" ]; then
   veridem_rate() { # bench binary, threads -> particle-steps/s of the whole run
@@ -127,6 +167,7 @@ echo "== 1e6-sphere bed (the 20k bed tiled 7 x 7 = 980,000 spheres), 200 steps, 
 for n in 1 2; do "$bench" --tile 7 --steps 200 --threads "$n" | sed 's/^/   veridem /'; done
 echo "== one ball on a turntable, 3,000,000 steps"
 "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
+drum_section
 if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
   echo "== baseline build $VERIDEM_BASELINE_BENCH: bed 1 thread, then turntable; this build again"
   "$VERIDEM_BASELINE_BENCH" --steps "$steps" --file "$shared/settled_bed_20k.xyz" | sed 's/^/   baseline /'

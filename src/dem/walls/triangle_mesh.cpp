@@ -62,11 +62,38 @@ void buildEdges(TriangleMesh& m)
     }
 }
 
-/// The uniform grid: cell edge about the mean triangle extent (at least 1/256 of the diagonal,
-/// at most 8 cells per triangle overall), each triangle listed in every cell its box overlaps.
+/// True unless an axis separates the triangle (a, b, c) from the cube of half-size h about
+/// `centre` [m]: the triangle's normal or an edge crossed with a cube axis (the separating-axis
+/// test of Akenine-Moller 2001; the cube's own axes are the caller's box test). h is taken
+/// larger by a relative 1e-6, so round-off never drops a triangle that meets the cube.
+bool triangleMeetsCube(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& centre, Real h)
+{
+    const Vec3 v[3] = {a - centre, b - centre, c - centre};
+    const Real slack = h * (1 + 1e-6);
+    const auto separates = [&](const Vec3& axis)
+    {
+        const Real p0 = dot(axis, v[0]), p1 = dot(axis, v[1]), p2 = dot(axis, v[2]);
+        const Real reach = slack * (std::fabs(axis.x) + std::fabs(axis.y) + std::fabs(axis.z));
+        return std::fmin(p0, std::fmin(p1, p2)) > reach || std::fmax(p0, std::fmax(p1, p2)) < -reach;
+    };
+    const Vec3 edges[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+    if (separates(cross(edges[0], edges[1])))
+        return false;
+    for (const Vec3& e : edges)
+        if (separates(Vec3{0, -e.z, e.y}) || separates(Vec3{e.z, 0, -e.x}) || separates(Vec3{-e.y, e.x, 0}))
+            return false;
+    return true;
+}
+
+/// The uniform grid: cell edge about the median triangle extent (at least 1/256 of the diagonal,
+/// at most 8 cells per triangle overall), each triangle listed in every cell of its box that it
+/// meets (triangleMeetsCube: a long sliver, as in a fan of an end disk, is not listed in the many
+/// cells of its box that it misses). A triangle within r of a point meets a cell of the point's
+/// box of half-size r, so trianglesNear still gives every triangle that can touch a sphere.
 void buildGrid(TriangleMesh& m)
 {
-    Real meanExtent = 0;
+    std::vector<Real> extents;
+    extents.reserve(m.triangles.size());
     for (const auto& t : m.triangles)
     {
         Vec3 lo = m.vertices[t[0]], hi = lo;
@@ -76,11 +103,12 @@ void buildGrid(TriangleMesh& m)
             lo = {std::fmin(lo.x, v.x), std::fmin(lo.y, v.y), std::fmin(lo.z, v.z)};
             hi = {std::fmax(hi.x, v.x), std::fmax(hi.y, v.y), std::fmax(hi.z, v.z)};
         }
-        meanExtent += std::fmax(hi.x - lo.x, std::fmax(hi.y - lo.y, hi.z - lo.z));
+        extents.push_back(std::fmax(hi.x - lo.x, std::fmax(hi.y - lo.y, hi.z - lo.z)));
     }
-    meanExtent /= Real(m.triangles.size());
+    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+    const Real medianExtent = extents[extents.size() / 2];
     const Vec3 extent = m.upper - m.lower;
-    Real cell = std::fmax(meanExtent, m.size / 256);
+    Real cell = std::fmax(medianExtent, m.size / 256);
     const auto count = [&](Real c)
     {
         return std::array<int, 3>{1 + static_cast<int>(extent.x / c), 1 + static_cast<int>(extent.y / c),
@@ -109,10 +137,17 @@ void buildGrid(TriangleMesh& m)
         }
         const auto index = [&](Real value, Real origin, int cells)
         { return std::clamp(static_cast<int>((value - origin) / cell), 0, cells - 1); };
+        const Vec3 &a = m.vertices[m.triangles[t][0]], &b = m.vertices[m.triangles[t][1]],
+                   &c = m.vertices[m.triangles[t][2]];
         for (int i = index(lo.x, m.lower.x, n[0]); i <= index(hi.x, m.lower.x, n[0]); ++i)
             for (int j = index(lo.y, m.lower.y, n[1]); j <= index(hi.y, m.lower.y, n[1]); ++j)
                 for (int k = index(lo.z, m.lower.z, n[2]); k <= index(hi.z, m.lower.z, n[2]); ++k)
-                    lists[(std::size_t(k) * n[1] + j) * n[0] + i].push_back(static_cast<std::uint32_t>(t));
+                {
+                    const Vec3 centre = m.lower + cell * Vec3{i + 0.5, j + 0.5, k + 0.5};
+                    if (triangleMeetsCube(a, b, c, centre, 0.5 * cell))
+                        lists[(std::size_t(k) * n[1] + j) * n[0] + i].push_back(
+                            static_cast<std::uint32_t>(t));
+                }
     }
     m.cellStart.assign(1, 0);
     for (const auto& l : lists)
