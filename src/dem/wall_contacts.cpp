@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace veridem::dem
 {
@@ -79,36 +80,71 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     markActivity(walls);
 
     // Candidates per chunk of particles, concatenated in order (sorted by (particle, wall)).
+    // (A mesh candidate's slots: its triangles' count on the first, 0 on the others.)
     const int chunks = std::min(loopThreads(n), 64);
     std::vector<std::vector<std::uint32_t>> chunkParticle(static_cast<std::size_t>(chunks)),
-        chunkWall(static_cast<std::size_t>(chunks));
+        chunkWall(static_cast<std::size_t>(chunks)), chunkTriangleCount(static_cast<std::size_t>(chunks)),
+        chunkTriangles(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
                    {
                        auto& ps = chunkParticle[static_cast<std::size_t>(c)];
                        auto& ws = chunkWall[static_cast<std::size_t>(c)];
+                       auto& counts = chunkTriangleCount[static_cast<std::size_t>(c)];
+                       auto& triangles = chunkTriangles[static_cast<std::size_t>(c)];
                        for (std::size_t i = begin; i < end; ++i)
                            for (std::size_t w = 0; w < walls.size(); ++w)
-                               if (wallNear(walls[w], particles.position[i], particles.radius[i], skin))
+                           {
+                               const Wall& candidate = walls[w];
+                               const Vec3& x = particles.position[i];
+                               const Real r = particles.radius[i];
+                               const auto* mesh = std::get_if<MeshShape>(&candidate.shape);
+                               if (mesh && wallActive(candidate))
                                {
-                                   const int slots =
-                                       std::holds_alternative<MeshShape>(walls[w].shape) ? kMeshSlots : 1;
-                                   for (int q = 0; q < slots; ++q)
+                                   const std::size_t near = meshTrianglesNear(*mesh, candidate.displacement,
+                                                                              x, r, skin, triangles);
+                                   if (near == 0)
+                                       continue;
+                                   for (int q = 0; q < kMeshSlots; ++q)
                                    {
                                        ps.push_back(static_cast<std::uint32_t>(i));
                                        ws.push_back(static_cast<std::uint32_t>(w));
+                                       counts.push_back(q == 0 ? static_cast<std::uint32_t>(near) : 0);
                                    }
                                }
+                               else if (!mesh && wallNear(candidate, x, r, skin))
+                               {
+                                   ps.push_back(static_cast<std::uint32_t>(i));
+                                   ws.push_back(static_cast<std::uint32_t>(w));
+                                   counts.push_back(0);
+                               }
+                           }
                    });
-    std::vector<std::uint32_t> newParticle, newWall;
+    std::vector<std::uint32_t> newParticle, newWall, triangleStart, triangles;
     for (int c = 0; c < chunks; ++c)
     {
         const auto& ps = chunkParticle[static_cast<std::size_t>(c)];
         const auto& ws = chunkWall[static_cast<std::size_t>(c)];
         newParticle.insert(newParticle.end(), ps.begin(), ps.end());
         newWall.insert(newWall.end(), ws.begin(), ws.end());
+        if (anyMesh)
+        {
+            triangleStart.insert(triangleStart.end(), chunkTriangleCount[std::size_t(c)].begin(),
+                                 chunkTriangleCount[std::size_t(c)].end());
+            triangles.insert(triangles.end(), chunkTriangles[std::size_t(c)].begin(),
+                             chunkTriangles[std::size_t(c)].end());
+        }
     }
     const std::size_t count = newParticle.size();
+    if (anyMesh) // counts to offsets
+    {
+        triangleStart.push_back(0);
+        std::uint32_t offset = 0;
+        for (std::size_t k = 0; k <= count; ++k)
+            offset += std::exchange(triangleStart[k], offset);
+    }
+    meshTriangleStart.swap(triangleStart);
+    meshTriangles.swap(triangles);
 
     // Re-key the history: each slot's source is the old slot with the same (particle, wall) (the
     // q-th slot of a mesh wall's group the old group's q-th).
@@ -187,6 +223,8 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
     wall.swap(newWall);
     history = std::move(renamed);
     start.clear();
+    meshTriangleStart.clear(); // (the rebuild that follows makes them again)
+    meshTriangles.clear();
 }
 
 std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
@@ -198,7 +236,12 @@ std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall,
         --first;
     group.first = first;
     MeshContact found[kMeshSlots];
-    const int count = meshContacts(std::get<MeshShape>(meshWall.shape), meshWall.displacement, x, r, found);
+    const MeshShape& shape = std::get<MeshShape>(meshWall.shape);
+    const int count = meshTriangleStart.size() == particle.size() + 1
+                          ? meshContacts(shape, meshWall.displacement, x, r,
+                                         meshTriangles.data() + meshTriangleStart[first],
+                                         meshTriangleStart[first + 1] - meshTriangleStart[first], found)
+                          : meshContacts(shape, meshWall.displacement, x, r, found);
     const Vec3* stored = meshNormal.data() + first;
     bool taken[kMeshSlots] = {};
     for (int q = 0; q < kMeshSlots; ++q)
@@ -270,7 +313,7 @@ std::size_t WallContactList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(particle) + bytes(wall) + bytes(start) + bytes(wallDisplacementAtBuild_) +
            bytes(wallActiveAtBuild_) + bytes(loadForce) + bytes(loadMoment) + bytes(meshNormal) +
-           bytes(wallTurnAtBuild_);
+           bytes(wallTurnAtBuild_) + bytes(meshTriangleStart) + bytes(meshTriangles);
 }
 
 } // namespace veridem::dem

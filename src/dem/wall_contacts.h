@@ -40,6 +40,13 @@ class WallContactList
     // Per slot, the body-frame unit normal of its mesh contact (zero if none); empty unless some
     // wall is a mesh.
     std::vector<Vec3> meshNormal;
+    // The triangles a (particle, mesh wall) candidate can touch until the next rebuild (those
+    // within r + skin at the build: meshTrianglesNear), as ranges over slots: the group's first
+    // slot k holds meshTriangles[meshTriangleStart[k], meshTriangleStart[k+1]), its other slots
+    // and non-mesh slots none. Empty unless some wall is a mesh, and after a restore or a
+    // renaming until the next rebuild (the query then falls back to the mesh's grid: the same
+    // contacts).
+    std::vector<std::uint32_t> meshTriangleStart, meshTriangles;
 
     /// The contacts of one (particle, mesh wall) candidate matched to its slots, for a loop over
     /// slots: `first` is the group's first slot; `fresh` marks a slot taken over by a new contact

@@ -77,18 +77,61 @@ bool vertexRegion(const TriangleMesh& m, std::uint32_t v, const Vec3& diff, Real
 
 constexpr int kMaxFound = 32;
 
-/// Contacts of body-frame point p (radius r, plus `reach` [m]) after elimination, deepest first.
-int findContacts(const TriangleMesh& m, const Vec3& p, Real r, Found* out)
+/// Room for kMaxFound contacts, left uninitialised (a Found array would zero its 1.3 KB on every
+/// query; only the entries written are read).
+union FoundBuffer
 {
-    thread_local std::vector<std::uint32_t> near;
-    const Vec3 span{r, r, r};
-    m.trianglesNear(p - span, p + span, near);
-    Found found[kMaxFound];
-    int count = 0;
-    for (const std::uint32_t t : near)
+    FoundBuffer() {}
+    Found item[kMaxFound];
+};
+
+/// True if triangle t is certainly farther than r [m] from p: a lower bound of the distance,
+/// sqrt(s^2 + o^2) with s the distance from the triangle's plane and o the largest distance of p
+/// outside the three half-planes bounded by its edges (inward normals, in the plane), exceeds r
+/// by more than the bound's rounding (a relative 1e-10 of the lengths involved), so no contact
+/// findContacts would keep is skipped. A few dot products instead of closestPointOnTriangle for
+/// most listed triangles (those near but not touching).
+bool fartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r)
+{
+    const auto& tri = m.triangles[t];
+    const auto& in = m.inward[t];
+    const Vec3 pa = p - m.vertices[tri[0]];
+    const Real s = dot(pa, m.normals[t]);
+    const Real o = std::max(
+        {Real(0), -dot(pa, in[0]), -dot(p - m.vertices[tri[1]], in[1]), -dot(p - m.vertices[tri[2]], in[2])});
+    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z));
+    return s * s + o * o > (r + margin) * (r + margin);
+}
+
+/// Sorts found[0, count) by `before` (a strict weak order), stable: insertion sort, as count is a
+/// handful (no allocation, unlike std::stable_sort).
+template <class Before> void sortFound(Found* found, int count, Before before)
+{
+    for (int i = 1; i < count; ++i)
     {
+        const Found f = found[i];
+        int j = i;
+        for (; j > 0 && before(f, found[j - 1]); --j)
+            found[j] = found[j - 1];
+        found[j] = f;
+    }
+}
+
+/// Contacts of body-frame point p (radius r [m]) with the triangles `near` (ascending; every
+/// triangle that touches the sphere among them) after elimination, deepest first.
+int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32_t* near,
+                 std::size_t nearCount, Found* out)
+{
+    FoundBuffer buffer;
+    Found* const found = buffer.item;
+    int count = 0;
+    for (std::size_t n = 0; n < nearCount; ++n)
+    {
+        const std::uint32_t t = near[n];
         const auto& tri = m.triangles[t];
         const Vec3& a = m.vertices[tri[0]];
+        if (fartherThan(m, t, p, r))
+            continue;
         const TrianglePoint cp = closestPointOnTriangle(p, a, m.vertices[tri[1]], m.vertices[tri[2]]);
         Found f;
         if (cp.feature == MeshFeature::Face)
@@ -128,7 +171,7 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, Found* out)
             found[count++] = f;
     }
     // Faces first, then deeper, then by id (a deterministic order), and merge equal normals.
-    std::sort(found, found + count,
+    sortFound(found, count,
               [](const Found& x, const Found& y)
               {
                   if (x.rank != y.rank)
@@ -146,20 +189,30 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, Found* out)
         if (!merged)
             out[kept++] = found[q];
     }
-    std::stable_sort(out, out + kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
+    sortFound(out, kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
     return kept;
 }
 
 } // namespace
 
-int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
+                 std::size_t nearCount, MeshContact* out)
 {
-    Found found[kMaxFound];
-    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, found);
+    FoundBuffer buffer;
+    Found* const found = buffer.item;
+    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, near, nearCount, found);
     const int kept = std::min(count, kMeshSlots);
     for (int q = 0; q < kept; ++q)
         out[q] = {found[q].overlap, worldDirection(shape, found[q].normal), found[q].normal};
     return kept;
+}
+
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+{
+    thread_local std::vector<std::uint32_t> near;
+    const Vec3 p = bodyPoint(shape, offset, x), span{r, r, r};
+    shape.mesh->trianglesNear(p - span, p + span, near);
+    return meshContacts(shape, offset, x, r, near.data(), near.size(), out);
 }
 
 WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r)
@@ -175,22 +228,34 @@ WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real 
     return g;
 }
 
-bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach)
+std::size_t meshTrianglesNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach,
+                              std::vector<std::uint32_t>& out)
 {
     const TriangleMesh& m = *shape.mesh;
     const Vec3 p = bodyPoint(shape, offset, x);
     const Real limit = r + reach;
     thread_local std::vector<std::uint32_t> near;
     m.trianglesNear(p - Vec3{limit, limit, limit}, p + Vec3{limit, limit, limit}, near);
+    std::size_t added = 0;
     for (const std::uint32_t t : near)
     {
         const auto& tri = m.triangles[t];
         const TrianglePoint cp =
             closestPointOnTriangle(p, m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
         if (lengthSquared(p - cp.point) < limit * limit)
-            return true;
+        {
+            out.push_back(t);
+            ++added;
+        }
     }
-    return false;
+    return added;
+}
+
+bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach)
+{
+    thread_local std::vector<std::uint32_t> near;
+    near.clear();
+    return meshTrianglesNear(shape, offset, x, r, reach, near) > 0;
 }
 
 } // namespace veridem::dem

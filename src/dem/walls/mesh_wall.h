@@ -28,6 +28,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 namespace veridem::dem
 {
@@ -72,12 +73,24 @@ struct MeshContact
 };
 
 /// The contacts of a sphere (centre x, radius r [m]) with the mesh after contact elimination
-/// (header comment), deepest first, at most kMeshSlots; returns their number.
+/// (header comment), deepest first, at most kMeshSlots; returns their number. Looks the
+/// triangles near the sphere up in the mesh's grid.
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out);
+/// The same among the triangles near[0, nearCount) (ascending ids), which must include every
+/// triangle the sphere touches (a candidate's list from meshTrianglesNear, kept while the relative
+/// motion stays within the reach it was made with): the same contacts, without the grid lookup.
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
+                 std::size_t nearCount, MeshContact* out);
 
 /// The deepest contact of a sphere with the mesh (for single-gap uses: diagnostics, initial
 /// overlap checks). The force stage takes all of them (WallContactList::meshGaps).
 WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r);
+
+/// Appends to `out` the triangles (ascending ids) within r + reach [m] of the centre x [m]: the
+/// only ones the sphere can touch while its motion relative to the mesh stays below `reach`.
+/// Returns how many were appended.
+std::size_t meshTrianglesNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach,
+                              std::vector<std::uint32_t>& out);
 
 /// True if the sphere is within `reach` [m] of the mesh surface (the candidate-list test).
 bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach);
