@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <ctime>
 #include <memory>
 #include <random>
@@ -118,6 +119,34 @@ void neighbourRebuild(benchmark::State& state)
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles.size()));
 }
 BENCHMARK(neighbourRebuild)->Arg(16)->Arg(28);
+
+/// A full rebuild of the Verlet list on 20,000 spheres placed at random (overlaps allowed) at a
+/// solid fraction of 0.2: all of radius 0.1 mm (Arg 1), or with the same total count a mixture
+/// of size ratio 10 in which the large spheres (r = 1 mm) hold half the solid volume (Arg 10:
+/// 20 large, 19,980 small). Time per sphere of each: the mixture should cost about what the
+/// monodisperse set costs (dem/pair_search.h).
+void neighbourRebuildSizeRatio(benchmark::State& state)
+{
+    const int ratio = static_cast<int>(state.range(0));
+    const std::size_t n = 20000, large = ratio > 1 ? 20 : 0;
+    const Real small = 0.1e-3, big = small * ratio;
+    const Real volume =
+        (Real(n - large) * small * small * small + Real(large) * big * big * big) * 4.18879 / 0.2;
+    const Real side = std::cbrt(volume);
+    ParticleStore p;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> x(0, side);
+    for (std::size_t i = 0; i < n; ++i)
+        p.add({x(rng), x(rng), x(rng)}, {}, {}, i < large ? big : small, 2500, 0);
+    NeighborList list;
+    ContactHistoryStore history{false};
+    list.skin = 0.2 * small;
+    for (auto _ : state)
+        list.rebuild(p, history);
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    state.counters["pairs/sphere"] = static_cast<double>(list.size()) / static_cast<double>(n);
+}
+BENCHMARK(neighbourRebuildSizeRatio)->Arg(1)->Arg(10);
 
 /// side^2 spheres (r = 1 mm, at rest, 2.5 mm apart: no pair contacts) resting on the floor z = 0
 /// with the overlap of their weight. The floor is an analytic plane or (mesh) a flat square of

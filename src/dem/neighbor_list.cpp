@@ -1,10 +1,9 @@
 #include "dem/neighbor_list.h"
 
 #include "core/resize_exactly.h"
-#include "dem/parallel.h"
+#include "dem/pair_search.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace veridem::dem
 {
@@ -256,102 +255,16 @@ void NeighborList::rebuild(const ParticleStore& particles, ContactHistoryStore& 
         return;
     }
 
-    // Grid over the bounding box; cell edge covers the largest possible pair distance.
-    Vec3 lo = particles.position[0], hi = lo;
-    Real maxRadius = 0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const Vec3& x = particles.position[i];
-        lo = {std::fmin(lo.x, x.x), std::fmin(lo.y, x.y), std::fmin(lo.z, x.z)};
-        hi = {std::fmax(hi.x, x.x), std::fmax(hi.y, x.y), std::fmax(hi.z, x.z)};
-        maxRadius = std::fmax(maxRadius, particles.radius[i]);
-    }
-    const Real search = skin + reach; // beyond r_i + r_j [m]
-    Real cell = std::fmax(2 * maxRadius + search, 1e-12);
-    // Cell counts in floating point, converted only once bounded: a blown-up state (huge or
-    // non-finite positions, stopped by the caller's health check) must neither hang this loop
-    // nor overflow a float-to-integer conversion. A box that is not finite gets one cell.
-    const bool finiteBox = isFinite(hi - lo);
-    auto cellsAlong = [&](Real extent) { return finiteBox ? std::floor(extent / cell) + 1 : Real(1); };
-    // Keep the grid O(N): a lone particle far away must not create billions of empty cells.
-    const std::size_t maxCells = 4 * n + 64;
-    while (cellsAlong(hi.x - lo.x) * cellsAlong(hi.y - lo.y) * cellsAlong(hi.z - lo.z) > Real(maxCells))
-        cell *= 1.5;
-    const auto nx = static_cast<std::size_t>(cellsAlong(hi.x - lo.x)),
-               ny = static_cast<std::size_t>(cellsAlong(hi.y - lo.y)),
-               nz = static_cast<std::size_t>(cellsAlong(hi.z - lo.z));
-    const std::size_t cellCount = nx * ny * nz;
-    auto coordinate = [&](Real value, Real origin, std::size_t count)
-    {
-        const Real c = (value - origin) / cell; // NaN for a NaN position: cell 0
-        return c >= 0 && c < Real(count) ? static_cast<std::size_t>(c) : c >= Real(count) ? count - 1 : 0;
-    };
-
-    // Counting sort of particles by cell (stable: ascending index within a cell). The grid arrays
-    // live only during the rebuild (12 bytes per particle not held between rebuilds).
-    std::vector<std::uint32_t> cellStart_(cellCount + 1, 0), cellOf_(n), cellParticles_(n), fill_;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const Vec3& x = particles.position[i];
-        const std::size_t c =
-            (coordinate(x.z, lo.z, nz) * ny + coordinate(x.y, lo.y, ny)) * nx + coordinate(x.x, lo.x, nx);
-        cellOf_[i] = static_cast<std::uint32_t>(c);
-        ++cellStart_[c + 1];
-    }
-    for (std::size_t c = 0; c < cellCount; ++c)
-        cellStart_[c + 1] += cellStart_[c];
-    fill_.assign(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-        cellParticles_[fill_[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
-
-    // For each i, all j > i within r_i + r_j + skin, in ascending j. Each chunk of particles
-    // (one per thread) collects its own pairs; the chunks are concatenated in order.
-    const int chunks = std::min(loopThreads(n), 64);
-    std::vector<std::vector<std::uint32_t>> chunkSecond(static_cast<std::size_t>(chunks));
-    parallelChunks(
-        n, chunks,
-        [&](int chunk, std::size_t begin, std::size_t end)
-        {
-            std::vector<std::uint32_t>& out = chunkSecond[static_cast<std::size_t>(chunk)];
-            std::vector<std::uint32_t> scratch;
-            for (std::size_t i = begin; i < end; ++i)
-            {
-                const std::size_t c = cellOf_[i];
-                const std::size_t cx = c % nx, cy = (c / nx) % ny, cz = c / (nx * ny);
-                const Vec3 xi = particles.position[i];
-                const Real ri = particles.radius[i];
-                scratch.clear();
-                for (std::size_t z = (cz ? cz - 1 : 0); z <= std::min(cz + 1, nz - 1); ++z)
-                    for (std::size_t y = (cy ? cy - 1 : 0); y <= std::min(cy + 1, ny - 1); ++y)
-                    {
-                        const std::size_t row = (z * ny + y) * nx;
-                        const std::size_t xBegin = cx ? cx - 1 : 0, xEnd = std::min(cx + 1, nx - 1);
-                        // Cells of one row are contiguous in cellParticles_.
-                        for (std::uint32_t k = cellStart_[row + xBegin]; k < cellStart_[row + xEnd + 1]; ++k)
-                        {
-                            const std::uint32_t j = cellParticles_[k];
-                            if (j <= i)
-                                continue;
-                            const Real within = ri + particles.radius[j] + search;
-                            if (lengthSquared(xi - particles.position[j]) < within * within)
-                                scratch.push_back(j);
-                        }
-                    }
-                std::sort(scratch.begin(), scratch.end());
-                out.insert(out.end(), scratch.begin(), scratch.end());
-                // Count of pairs of i, turned into offsets below.
-                firstStart[i + 1] = static_cast<std::uint32_t>(scratch.size());
-            }
-        });
+    // Candidate pairs: for each i, every j > i within r_i + r_j + skin + reach, ascending
+    // (pair_search.h: O(N) for any mix of sizes).
+    std::vector<std::uint32_t> newSecond;
+    findPairsWithin(particles, skin + reach, firstStart, newSecond);
     for (std::size_t i = 0; i < n; ++i)
         firstStart[i + 1] += firstStart[i];
     const std::size_t pairCount = firstStart[n];
     // The new list is built in fresh arrays of exact size and swapped in; the old ones are freed
     // on return, so that only one copy of the list is held between rebuilds.
-    std::vector<std::uint32_t> newFirst(pairCount), newSecond;
-    newSecond.reserve(pairCount);
-    for (const auto& part : chunkSecond)
-        newSecond.insert(newSecond.end(), part.begin(), part.end());
+    std::vector<std::uint32_t> newFirst(pairCount);
     for (std::size_t i = 0; i < n; ++i)
         std::fill(newFirst.begin() + firstStart[i], newFirst.begin() + firstStart[i + 1],
                   static_cast<std::uint32_t>(i));

@@ -1,8 +1,9 @@
 // Neighbour list (Verlet list on a cell grid), whose touching candidates key the pair contacts'
 // history (ContactHistoryStore).
 //
-// Design. Candidate pairs (i < j) whose gap is below `skin` are found by binning particles into
-// cubic cells of edge >= 2 r_max + skin and testing the 27 surrounding cells: O(N). The list is
+// Design. Candidate pairs (i < j) whose gap is below `skin` are found on cell grids, one per
+// size class of the radii (dem/pair_search.h: one grid of cells of edge 2 r_max + skin and the 27
+// cells around each particle when the radii are within a factor 2): O(N). The list is
 // kept sorted by (i, j) and rebuilt only when some particle has moved more than skin/2 since the
 // last build, so between rebuilds no pair can come into contact unseen.
 //

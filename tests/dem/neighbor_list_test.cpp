@@ -1,6 +1,8 @@
 // The Verlet list finds exactly the pairs a brute-force search finds, stays sorted, and carries
 // history over a rebuild by (i, j) and over a new candidate sub-list by slot.
 #include "dem/neighbor_list.h"
+#include "dem/pair_search.h"
+#include "exec/thread_pool.h"
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,50 @@ TEST(NeighborList, MatchesBruteForce)
         EXPECT_EQ(list.first[k], i);
         EXPECT_EQ(list.second[k], j);
         ++k;
+    }
+}
+
+/// Size classes (dem/pair_search.h): a mixture with a size ratio of 10 (large and small spheres
+/// and a spread between them, packed densely, and one sphere far away) gives exactly the
+/// brute-force pairs, on one thread and on two.
+TEST(NeighborList, SizeRatioTenMatchesBruteForce)
+{
+    EXPECT_EQ(sizeClassCount(1e-3, 2e-3), 1); // within a factor 2: one grid, as without classes
+    EXPECT_EQ(sizeClassCount(0.99e-3, 2e-3), 2);
+    EXPECT_EQ(sizeClassCount(0.2e-3, 2e-3), 4); // ratio 10: [1, 2), [0.5, 1), [0.25, 0.5), below
+    ParticleStore p;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> x(0, 0.02), spread(0.2e-3, 2e-3);
+    for (int i = 0; i < 3000; ++i)
+    {
+        const double r = i % 3 == 0 ? 2e-3 : i % 3 == 1 ? 0.2e-3 : spread(rng);
+        p.add({x(rng), x(rng), x(rng)}, {}, {}, r, 2500, 0);
+    }
+    p.add({1.0, 1.0, 1.0}, {}, {}, 0.2e-3, 2500, 0);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> expected;
+    const double skin = 0.1e-3;
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+        for (std::uint32_t j = i + 1; j < p.size(); ++j)
+        {
+            const double reach = p.radius[i] + p.radius[j] + skin;
+            if (lengthSquared(p.position[i] - p.position[j]) < reach * reach)
+                expected.insert({i, j});
+        }
+    for (const int threads : {1, 2})
+    {
+        exec::ThreadCountOverride override(threads);
+        NeighborList list;
+        ContactHistoryStore history{true};
+        list.skin = skin;
+        list.rebuild(p, history);
+        ASSERT_EQ(list.size(), expected.size()) << threads << " threads";
+        std::size_t k = 0;
+        for (const auto& [i, j] : expected)
+        {
+            ASSERT_EQ(list.first[k], i);
+            ASSERT_EQ(list.second[k], j);
+            ++k;
+        }
     }
 }
 
