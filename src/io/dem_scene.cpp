@@ -473,7 +473,9 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     {
         if (!domain)
             throw;
-        domain->fail("max", std::string("is too close to 'min': ") + e.what());
+        std::ostringstream message;
+        message << "is too close to 'min': " << e.what();
+        domain->fail("max", message.str());
     }
     for (auto& pair : pairs)
         applyPairOverride(pair, world);

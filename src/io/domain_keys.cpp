@@ -6,6 +6,21 @@
 namespace veridem::io
 {
 
+namespace
+{
+
+/// Fails at `key` of `table` with the parts streamed into one message (streamed rather than
+/// concatenated: GCC 12's LTO warns falsely on std::string + literal chains here).
+template <class... Parts>
+[[noreturn]] void failWith(const TableReader& table, std::string_view key, const Parts&... parts)
+{
+    std::ostringstream s;
+    (s << ... << parts);
+    table.fail(key, s.str());
+}
+
+} // namespace
+
 std::optional<TableReader> readDomain(TableReader& top, dem::World& world,
                                       const MeasurementOptions& measurements)
 {
@@ -25,8 +40,7 @@ std::optional<TableReader> readDomain(TableReader& top, dem::World& world,
     const Real edges[3] = {edge.x, edge.y, edge.z};
     for (int a = 0; a < 3; ++a)
         if (d.periodic[static_cast<std::size_t>(a)] && !(edges[a] > 0 && std::isfinite(edges[a])))
-            domain->fail("max",
-                         std::string("must exceed 'min' along the periodic axis ") + "xyz"[a] + " [m]");
+            failWith(*domain, "max", "must exceed 'min' along the periodic axis ", "xyz"[a], " [m]");
     if (!d.any())
         return std::nullopt; // a box without periodic axes bounds nothing (yet)
 
@@ -40,16 +54,17 @@ std::optional<TableReader> readDomain(TableReader& top, dem::World& world,
     };
     for (const dem::Wall& w : world.walls)
     {
-        const std::string name = "wall '" + w.name + "'";
         const auto* plane = std::get_if<dem::PlaneShape>(&w.shape);
         if (!plane)
-            domain->fail("periodic", name + " is not a plane: only infinite planes parallel to the periodic "
-                                            "axes may be used with periodic boundaries");
+            failWith(*domain, "periodic", "wall '", w.name,
+                     "' is not a plane: only infinite planes parallel to the periodic axes may be used "
+                     "with periodic boundaries");
         if (std::isfinite(plane->diskRadius))
-            domain->fail("periodic", name + " is a finite disk: it would end at a periodic face");
+            failWith(*domain, "periodic", "wall '", w.name,
+                     "' is a finite disk: it would end at a periodic face");
         if (const int a = crossing(plane->normal); a >= 0)
-            domain->fail("periodic", name + " crosses the periodic axis " + std::string(1, "xyz"[a]) +
-                                         " (its normal must be perpendicular to every periodic axis)");
+            failWith(*domain, "periodic", "wall '", w.name, "' crosses the periodic axis ", "xyz"[a],
+                     " (its normal must be perpendicular to every periodic axis)");
     }
     const auto& p = world.particles;
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -58,19 +73,17 @@ std::optional<TableReader> readDomain(TableReader& top, dem::World& world,
         if (wrapped == x)
             continue;
         const char axis = wrapped.x != x.x ? 'x' : wrapped.y != x.y ? 'y' : 'z';
-        std::ostringstream s;
-        s << "and 'max' leave sphere " << i << " at (" << x.x << ", " << x.y << ", " << x.z
-          << ") m outside the box [min, max) along the periodic axis " << axis
-          << " (particles are not wrapped at the start: move it inside)";
-        domain->fail("min", s.str());
+        failWith(*domain, "min", "and 'max' leave sphere ", i, " at (", x.x, ", ", x.y, ", ", x.z,
+                 ") m outside the box [min, max) along the periodic axis ", axis,
+                 " (particles are not wrapped at the start: move it inside)");
     }
     if (measurements.energy || measurements.contacts || measurements.region)
-        domain->fail("periodic", std::string("[output] '") +
-                                     (measurements.energy     ? "energy"
-                                      : measurements.contacts ? "contacts"
-                                                              : "region_min") +
-                                     "' does not see the pairs that touch through a periodic face yet: "
-                                     "remove it or the periodic axes");
+        failWith(*domain, "periodic", "[output] '",
+                 measurements.energy     ? "energy"
+                 : measurements.contacts ? "contacts"
+                                         : "region_min",
+                 "' does not see the pairs that touch through a periodic face yet: remove it or the "
+                 "periodic axes");
     world.domain = d;
     return domain;
 }
