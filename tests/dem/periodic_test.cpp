@@ -8,13 +8,17 @@
 // the contact inputs agree to ~1e-13 relative; the tests allow 1e-9 relative to the force's scale
 // for the growth of that difference over a few hundred steps of a stable contact.
 #include "core/error.h"
+#include "dem/particle_changes.h"
 #include "dem/periodic.h"
 #include "dem/world.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
 #include <random>
+#include <sstream>
+#include <string>
 
 namespace veridem::dem
 {
@@ -123,8 +127,19 @@ PairState pairState(const World& world)
     return s;
 }
 
+/// A number in scientific notation, for RecordProperty.
+std::string scientific(Real value)
+{
+    std::ostringstream s;
+    s << std::scientific << std::setprecision(2) << value;
+    return s.str();
+}
+
+Real largestRelativeDifference = 0; // over the expectClose calls of a test (reported)
+
 void expectClose(const Vec3& a, const Vec3& b, Real scale, const char* what, int stepIndex)
 {
+    largestRelativeDifference = std::max(largestRelativeDifference, length(a - b) / scale);
     EXPECT_LE(length(a - b), 1e-9 * scale) << what << " at step " << stepIndex << ": " << a.x << " " << a.y
                                            << " " << a.z << " vs " << b.x << " " << b.y << " " << b.z;
 }
@@ -152,6 +167,7 @@ World twoSphereWorld(const TwoSpheres& t, const PeriodicDomain* domain, Real ski
 TEST(PeriodicBoundary, APairAcrossAFaceFeelsTheContactOfTheSamePairInTheInterior)
 {
     const Real edge = 0.02, dt = 1e-7;
+    largestRelativeDifference = 0;
     const PeriodicDomain periodic = box(edge, {true, true, true});
     // Sphere 0 just inside x = 0, sphere 1 just inside x = L: 1.99 mm apart through the face
     // (overlap 10 um), approaching along x and sliding in y and z.
@@ -184,6 +200,7 @@ TEST(PeriodicBoundary, APairAcrossAFaceFeelsTheContactOfTheSamePairInTheInterior
     EXPECT_EQ(b.periodicPairs.size(), 0u); // and direct in the other world
     EXPECT_EQ(touching, 300);              // in contact throughout
     EXPECT_GT(largestSpring, 0);           // with a tangential spring
+    ::testing::Test::RecordProperty("largest_relative_difference", scientific(largestRelativeDifference));
 }
 
 /// (iii) A sliding contact carried across the face x = L by the pair's common motion: one sphere
@@ -193,6 +210,7 @@ TEST(PeriodicBoundary, APairAcrossAFaceFeelsTheContactOfTheSamePairInTheInterior
 TEST(PeriodicBoundary, ASlidingContactKeepsItsSpringWhenAParticleWraps)
 {
     const Real edge = 0.02, dt = 1e-6;
+    largestRelativeDifference = 0;
     const PeriodicDomain periodic = box(edge, {true, false, false});
     // 1.99 mm apart: 0.9 mm in x, 1.775 mm in y; both moving at 10 m/s in x, sliding in z.
     const Real dy = std::sqrt(0.00199 * 0.00199 - 0.0009 * 0.0009);
@@ -225,6 +243,53 @@ TEST(PeriodicBoundary, ASlidingContactKeepsItsSpringWhenAParticleWraps)
     }
     EXPECT_GT(throughImage, 0);     // the pair went through an image
     EXPECT_GT(directAfterImage, 0); // and came back to the neighbour list
+    ::testing::Test::RecordProperty("largest_relative_difference", scientific(largestRelativeDifference));
+}
+
+/// A pair touching through a face keeps its contact when a particle is removed and the pair's
+/// order flips ((1, 2) becomes (0, 1) with particle 2 moved to index 0): its spring and image shift
+/// are negated with it, so the contact goes on as in a world that never had the third particle.
+TEST(PeriodicBoundary, APairThroughAFaceKeepsItsContactWhenRenamed)
+{
+    const Real edge = 0.02, dt = 1e-7;
+    largestRelativeDifference = 0;
+    const PeriodicDomain periodic = box(edge, {true, true, true});
+    const TwoSpheres across{{0.0006, 0.01, 0.01}, {edge - 0.00139, 0.0101, 0.0099},
+                            {-0.02, 0.1, 0.05},   {0.02, -0.1, -0.05},
+                            {0, 0, 30},           {10, 0, 0}};
+    World pair = twoSphereWorld(across, &periodic, 0.0005, 1000);
+    World three = emptyWorld(1000);
+    three.domain = periodic;
+    three.neighbors.skin = 0.0005;
+    three.particles.add({0.01, 0.01, 0.01}, {}, {}, 0.001, 2500, 0); // far from both, at rest
+    three.particles.add(across.x0, across.v0, across.w0, 0.001, 2500, 0);
+    three.particles.add(across.x1, across.v1, across.w1, 0.001, 2500, 0);
+    for (int s = 0; s < 100; ++s)
+    {
+        step(pair, dt);
+        step(three, dt);
+    }
+    ASSERT_EQ(three.periodicPairs.size(), 1u);
+    ASSERT_EQ(three.periodicPairs.second[0], 2u);
+    removeParticles(three, {0}); // particle 2 takes index 0: the pair is (0, 1), its order flipped
+    rebuildAfterParticleChange(three);
+    ASSERT_EQ(three.periodicPairs.size(), 1u);
+    EXPECT_EQ(three.periodicPairs.first[0], 0u);
+    EXPECT_NE(length(three.periodicPairs.history.spring[0]), 0);
+    for (int s = 1; s <= 200; ++s)
+    {
+        step(pair, dt);
+        step(three, dt);
+        ASSERT_EQ(three.health.touchingPairs, 1u) << s;
+        // three's particle 0 is pair's 1 and its 1 is pair's 0; the spring is that of (1, 0).
+        const Real scale = length(pair.particles.force[0]);
+        expectClose(three.particles.force[1], pair.particles.force[0], scale, "force", s);
+        expectClose(three.particles.force[0], pair.particles.force[1], scale, "force", s);
+        expectClose(three.particles.torque[1], pair.particles.torque[0], scale * 0.001, "torque", s);
+        expectClose(three.periodicPairs.history.spring[0], -pair.periodicPairs.history.spring[0],
+                    length(pair.periodicPairs.history.spring[0]), "spring", s);
+    }
+    ::testing::Test::RecordProperty("largest_relative_difference", scientific(largestRelativeDifference));
 }
 
 /// (iv) A fully periodic box of colliding spheres: the pair forces are equal and opposite, also
@@ -268,6 +333,7 @@ TEST(PeriodicBoundary, AFullyPeriodicBoxConservesMomentum)
     }
     const auto [after, afterScale] = momentum();
     EXPECT_LE(length(after - initial), 1e-12 * scale) << length(after - initial) / scale;
+    ::testing::Test::RecordProperty("relative_momentum_drift", scientific(length(after - initial) / scale));
     EXPECT_GT(throughFaces, 100u);                 // contacts through the faces took part
     for (const Vec3& x : world.particles.position) // within skin/2 of the box
         for (const Real c : {x.x, x.y, x.z})
