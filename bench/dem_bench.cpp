@@ -10,6 +10,8 @@
 //   tangential damping 2/7 of normal, mu = 0.5, no rolling friction, box walls x = 0, L; y = 0, L;
 //   floor z = 0 (same law), gravity 9.81, dt = 1e-5 s, skin 0.5 mm. --tile N repeats the bed
 //   N x N times side by side (box N L x N L), e.g. --tile 7 gives 980,000 spheres.
+//   --periodic: the bed periodic in x and y over the box instead of the four side walls (the pairs
+//   through the faces in dem/periodic.h's list; their count is printed).
 // turntable: one steel ball rolling on a turntable (the paper's Test 1 set-up with rolling
 //   friction), the cost of long single-particle verification runs.
 // drum: the bed's spheres and law inside a closed triangle-mesh drum (--mesh STL, from
@@ -76,6 +78,7 @@ struct Options
     int threads = 1;
     int repeat = 1;
     bool profile = false;
+    bool periodic = false;                // --periodic: the bed periodic in x and y (no side walls)
     bool sort = true;                     // renumber particles in Morton order of cells before the run
     bool fusion = true;                   // --no-fusion: Execution::fusedSteps off (the general stages)
     bool probeOnly = false;               // --core-probe: print one core probe (core_probe.h) and exit
@@ -91,6 +94,7 @@ struct Options
         "                     [--steps S] [--warmup W] [--threads T] [--repeat R] [--profile] [--no-sort]\n"
         "                     [--no-fusion] [--spin-ns NS] [--mesh STL] [--omega W] [--fill N] [--write-xyz "
         "OUT]\n"
+        "                     [--periodic]\n"
         "       veridem_bench --core-probe   (how much of a CPU core this process gets; no run)\n");
     std::exit(2);
 }
@@ -156,6 +160,8 @@ Options parse(int argc, char** argv)
             o.sort = false;
         else if (arg == "--no-fusion")
             o.fusion = false;
+        else if (arg == "--periodic")
+            o.periodic = true;
         else if (arg == "--profile")
             o.profile = true;
         else if (arg == "--core-probe")
@@ -282,10 +288,19 @@ World bedWorld(const Options& o)
     world.gravity = {0, 0, -9.81};
     world.neighbors.skin = 0.5e-3;
     const Real side = box * o.tile;
-    world.walls.push_back(plane("x0", {0, 0, 0}, {1, 0, 0}));
-    world.walls.push_back(plane("x1", {side, 0, 0}, {-1, 0, 0}));
-    world.walls.push_back(plane("y0", {0, 0, 0}, {0, 1, 0}));
-    world.walls.push_back(plane("y1", {0, side, 0}, {0, -1, 0}));
+    if (o.periodic) // the side walls' planes are the periodic faces (dem/periodic.h)
+    {
+        world.domain.min = {0, 0, 0};
+        world.domain.max = {side, side, box};
+        world.domain.periodic = {true, true, false};
+    }
+    else
+    {
+        world.walls.push_back(plane("x0", {0, 0, 0}, {1, 0, 0}));
+        world.walls.push_back(plane("x1", {side, 0, 0}, {-1, 0, 0}));
+        world.walls.push_back(plane("y0", {0, 0, 0}, {0, 1, 0}));
+        world.walls.push_back(plane("y1", {0, side, 0}, {0, -1, 0}));
+    }
     world.walls.push_back(plane("floor", {0, 0, 0}, {0, 0, 1}));
     world.particles.reserve(base.size() * static_cast<std::size_t>(o.tile * o.tile));
     for (int ty = 0; ty < o.tile; ++ty)
@@ -547,6 +562,14 @@ int run(int argc, char** argv)
         std::printf("  touching pairs %td (%.2f per particle), wall slots %zu, touching walls %td\n",
                     touching, static_cast<double>(touching) / static_cast<double>(n),
                     world.wallContacts.size(), wallTouching);
+        if (world.domain.any())
+        {
+            std::size_t formed = 0;
+            for (const std::uint8_t f : world.periodicPairs.history.formed)
+                formed += f;
+            std::printf("  pairs through a periodic face %zu (%zu in contact)\n", world.periodicPairs.size(),
+                        formed);
+        }
         std::printf("  kinetic energy after %ld steps %.9e J\n", o.warmup + o.steps, kineticEnergy(world));
         if (o.scene == "drum")
         {

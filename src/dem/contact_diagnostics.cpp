@@ -76,28 +76,23 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
     const NeighborList& list = world.neighbors;
     // Pairs: the contact frame of the force stage (pairContactFrame, contact_frame.h), within the
     // touch criterion's reach as the force stage passes them to the law; recorded while formed
-    // (JKR: the law's formed flag; every other model: delta > 0).
-    for (std::size_t k = 0; k < list.size(); ++k)
+    // (JKR: the law's formed flag; every other model: delta > 0). `separation`: x_i - x_j, or x_i
+    // minus j's periodic image [m].
+    // `historyOf()`: a copy of its history (the world keeps its own), read only for a touching pair.
+    const auto pairContact = [&](std::uint32_t i, std::uint32_t j, const Vec3& separation, Real effectiveMass,
+                                 const auto& historyOf)
     {
-        const std::uint32_t i = list.first[k], j = list.second[k];
         const Real ri = p.radius[i], rj = p.radius[j];
         const PairParams& params = world.pairs(p.material[i], p.material[j]);
         const bool jkr = params.normalModel == NormalModel::Jkr;
         const Real touching = ri + rj + (jkr ? list.reach : 0);
-        if (lengthSquared(p.position[i] - p.position[j]) >= touching * touching)
-            continue;
-        const ContactFrameOf<Real> f =
-            pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
-                                   p.angularVelocity[i], p.angularVelocity[j]);
-        // m* as the force stage takes it (NeighborList::activeMass; a frozen particle's is infinite)
-        const Real effectiveMass = p.fixed[i]   ? p.mass[j]
-                                   : p.fixed[j] ? p.mass[i]
-                                                : p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+        if (lengthSquared(separation) >= touching * touching)
+            return;
+        const ContactFrameOf<Real> f = pairContactFrame<Real>(
+            separation, ri, rj, p.velocity[i] - p.velocity[j], p.angularVelocity[i], p.angularVelocity[j]);
         const ContactInput in = pairContactInput(p, i, j, f, effectiveMass);
         const Real leverI = f.leverI, leverJ = f.leverJ;
-        const std::size_t a = list.candidateOfSlot(k);
-        ContactHistory history = // a copy: the world keeps its own
-            a == NeighborList::kNotCandidate ? ContactHistory{} : world.pairHistory.at(a);
+        ContactHistory history = historyOf();
         const bool wasFormed = history.formed != 0;
         LawTerms terms;
         const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
@@ -106,7 +101,7 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
             if (wasFormed && brokenEnergy) // it breaks in this step
                 *brokenEnergy +=
                     jkrBreakingEnergy(params.effectiveModulus, in.effectiveRadius, params.workOfAdhesion);
-            continue;
+            return;
         }
         ContactRecord r = recordOf(params, in, out, terms, history);
         r.i = i;
@@ -115,6 +110,29 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
         r.leverJ = leverJ;
         r.point = p.position[i] - leverI * in.normal;
         records.push_back(r);
+    };
+    for (std::size_t k = 0; k < list.size(); ++k)
+    {
+        const std::uint32_t i = list.first[k], j = list.second[k];
+        // m* as the force stage takes it (NeighborList::activeMass; a frozen particle's is infinite)
+        const Real effectiveMass = p.fixed[i]   ? p.mass[j]
+                                   : p.fixed[j] ? p.mass[i]
+                                                : effectivePairMass(p.mass[i], p.mass[j]);
+        pairContact(i, j, p.position[i] - p.position[j], effectiveMass,
+                    [&]
+                    {
+                        const std::size_t a = list.candidateOfSlot(k);
+                        return a == NeighborList::kNotCandidate ? ContactHistory{} : world.pairHistory.at(a);
+                    });
+    }
+    // Pairs through a periodic face (dem/periodic.h), in list order, with the shift the force
+    // stage subtracts.
+    const PeriodicPairs& periodic = world.periodicPairs;
+    for (std::size_t k = 0; k < periodic.size(); ++k)
+    {
+        const std::uint32_t i = periodic.first[k], j = periodic.second[k];
+        pairContact(i, j, (p.position[i] - p.position[j]) - periodic.shift[k], periodic.mass[k],
+                    [&] { return periodic.history.at(k); });
     }
     // Formed JKR candidates beyond the reach: the force stage opens them without the law.
     if (brokenEnergy && list.reach > 0)

@@ -14,6 +14,7 @@
 #include "dem/exec/pair_selection.h"
 #include "dem/pair_kernel.h"
 #include "dem/parallel.h"
+#include "dem/periodic.h"
 #include "exec/isa.h"
 
 #include <algorithm>
@@ -206,6 +207,8 @@ void computePairForces(World& world, Real dt, bool sumsAreZero)
     // sums to fill; addCrossBlockForces zeroes its force and torque.)
     if (world.particles.size() > 0 && world.neighbors.size() > 0)
         pairForcesOfSlots(world, dt, sumsAreZero);
+    if (!world.periodicPairs.empty()) [[unlikely]] // pairs through a periodic image, after the blocks
+        addPeriodicPairForces(world, dt, sumsAreZero);
 }
 
 void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks)

@@ -79,7 +79,7 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles, ContactHis
         const std::uint32_t k = activeSlots[a], i = first[k], j = second[k];
         activeFirst[a] = i;
         activeSecond[a] = j;
-        activeMass[a] = mass[i] * mass[j] / (mass[i] + mass[j]);
+        activeMass[a] = effectivePairMass(mass[i], mass[j]);
         activeDeferred[a] = deferredIndex[k];
     }
     if (anyFixed) [[unlikely]] // a frozen particle's mass is infinite: m* is the other's

@@ -38,6 +38,13 @@
 namespace veridem::dem
 {
 
+/// The effective mass of a pair, m* = m_i m_j / (m_i + m_j) [kg] (masses [kg]), as the candidates
+/// and the periodic pairs keep it.
+inline Real effectivePairMass(Real massI, Real massJ)
+{
+    return massI * massJ / (massI + massJ);
+}
+
 class NeighborList
 {
   public:

@@ -269,31 +269,36 @@ ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint
     return in;
 }
 
+PairContactResult pairContactAt(const World& world, std::uint32_t i, std::uint32_t j, const Vec3& separation,
+                                Real effectiveMass, ContactHistory& history, Real dt)
+{
+    const ParticleStore& p = world.particles;
+    const Real ri = p.radius[i], rj = p.radius[j];
+    const PairParams& params = world.pairs(p.material[i], p.material[j]);
+    const ContactFrameOf<Real> f = pairContactFrame<Real>(separation, ri, rj, p.velocity[i] - p.velocity[j],
+                                                          p.angularVelocity[i], p.angularVelocity[j]);
+    const ContactInput in = pairContactInput(p, i, j, f, effectiveMass);
+    const ContactOutput out = evaluateContact(params, in, history, dt);
+    const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
+    return {out.force, out.rollingTorque - f.leverI * tangentialTorque,
+            -out.rollingTorque - f.leverJ * tangentialTorque, in.overlap};
+}
+
 /// Touching candidate k through the general contact law (any model), added into the sink.
 void pairContactScalar(const World& world, const PairSink& sink, Real dt, std::size_t k, WorstOverlap& worst)
 {
     const ParticleStore& p = world.particles;
     const NeighborList& list = world.neighbors;
     const std::uint32_t i = list.activeFirst[k], j = list.activeSecond[k];
-    const Real ri = p.radius[i], rj = p.radius[j];
-    const PairParams& params = world.pairs(p.material[i], p.material[j]);
-    const ContactFrameOf<Real> f =
-        pairContactFrame<Real>(p.position[i] - p.position[j], ri, rj, p.velocity[i] - p.velocity[j],
-                               p.angularVelocity[i], p.angularVelocity[j]);
-    const ContactInput in = pairContactInput(p, i, j, f, list.activeMass[k]);
-    const Real leverI = f.leverI, leverJ = f.leverJ;
-
     ContactHistory history = sink.history(k);
-    const ContactOutput out = evaluateContact(params, in, history, dt);
+    const PairContactResult c =
+        pairContactAt(world, i, j, p.position[i] - p.position[j], list.activeMass[k], history, dt);
     sink.setHistory(k, history);
+    sink.add(static_cast<std::uint32_t>(k), i, j, c.force, c.torqueI, c.torqueJ);
 
-    const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
-    sink.add(static_cast<std::uint32_t>(k), i, j, out.force, out.rollingTorque - leverI * tangentialTorque,
-             -out.rollingTorque - leverJ * tangentialTorque);
-
-    const Real minRadius = std::min(ri, rj);
-    if (worst.exceededBy(in.overlap, minRadius))
-        worst = {in.overlap / minRadius, i, true};
+    const Real minRadius = std::min(p.radius[i], p.radius[j]);
+    if (worst.exceededBy(c.overlap, minRadius))
+        worst = {c.overlap / minRadius, i, true};
 }
 
 } // namespace veridem::dem

@@ -111,6 +111,19 @@ PairKernel pairKernelFor(exec::Isa isa);
 ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint32_t j,
                               const ContactFrameOf<Real>& frame, Real effectiveMass);
 
+/// A pair contact's results: force on i [N] (-force on j), torques on i and j [N m], overlap [m].
+struct PairContactResult
+{
+    Vec3 force, torqueI, torqueJ;
+    Real overlap;
+};
+
+/// Spheres i and j at separation x_i - x_j (or x_i minus j's periodic image) [m] through the
+/// contact frame and the general contact law (any model), with m* [kg]; `history` is read and
+/// updated. The one scalar evaluation of a pair (pairContactScalar, the periodic pairs).
+PairContactResult pairContactAt(const World& world, std::uint32_t i, std::uint32_t j, const Vec3& separation,
+                                Real effectiveMass, ContactHistory& history, Real dt);
+
 /// Touching candidate k through the general contact law (any model), added into the sink.
 void pairContactScalar(const World& world, const PairSink& sink, Real dt, std::size_t k, WorstOverlap& worst);
 

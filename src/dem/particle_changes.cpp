@@ -44,6 +44,7 @@ void removeParticles(World& world, std::vector<std::uint32_t> doomed)
         newIndex[original[s]] = static_cast<std::uint32_t>(s);
     world.neighbors.renameParticles(newIndex, world.pairHistory);
     world.wallContacts.renameParticles(newIndex, world.wallHistory);
+    world.periodicPairs.renameParticles(newIndex);
 }
 
 } // namespace veridem::dem

@@ -96,6 +96,13 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
 
 [[gnu::noinline, gnu::cold]] void rebuildContactLists(World& world)
 {
+    if (world.domain.any()) // positions wrapped into the box, the pairs through an image found
+    {
+        wrapParticles(world.domain, world.particles);
+        world.periodicPairs.rebuild(world.domain, world.particles,
+                                    world.neighbors.skin + world.neighbors.reach, world.neighbors.anyFixed,
+                                    world.neighbors, world.pairHistory);
+    }
     world.neighbors.rebuild(world.particles, world.pairHistory);
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
 }
@@ -292,7 +299,10 @@ void stepOneParticle(World& world, Real dt)
         moved.sinceBuild2 = std::max(Real{0}, lengthSquared(s.position - reference.built[0]));
     moveWalls(world.walls, dt);
     if (contactListsNeedRebuild(world, moved)) [[unlikely]]
+    {
         rebuildContactLists(world);
+        s.position = p.position[0]; // (wrapped into a periodic box)
+    }
     world.health.maxOverlapRatio = 0; // the pair stage (computePairForces) without pair slots: it
     world.health.touchingPairs = 0;   // only resets the pair health (one particle has no pairs)
 

@@ -7,6 +7,7 @@
 #include "dem/materials.h"
 #include "dem/neighbor_list.h"
 #include "dem/particles.h"
+#include "dem/periodic.h"
 #include "dem/wall_contacts.h"
 #include "dem/walls/wall.h"
 
@@ -161,6 +162,11 @@ struct World
     // pairHistory is touching candidate a's, entry k of wallHistory wall slot k's.
     ContactHistoryStore pairHistory{true};
     ContactHistoryStore wallHistory;
+    // Periodic boundaries (dem/periodic.h): the box and its periodic axes, and the pairs touching
+    // through a periodic image, with their history. With no periodic axis both stay empty and the
+    // step runs exactly as it would without the feature.
+    PeriodicDomain domain;
+    PeriodicPairs periodicPairs;
     // The frozen particles (ParticleStore::fixed) by index, and where they are held [m]; filled by
     // refreshFixedParticles(). Empty: the step runs exactly as it would without the feature.
     std::vector<std::uint32_t> fixedIndex;

@@ -26,9 +26,10 @@
 namespace veridem::io
 {
 
-inline constexpr std::uint32_t kCheckpointVersion = 4; // 2: the 3D energy ledger records (enLg, enSt); 3: its
+inline constexpr std::uint32_t kCheckpointVersion = 5; // 2: the 3D energy ledger records (enLg, enSt); 3: its
                                                        // adhesion dissipation; 4: particle ids and frozen
-                                                       // flags, inserter and outlet state (pId, pFix, fl*)
+                                                       // flags, inserter and outlet state (pId, pFix, fl*);
+                                                       // 5: the periodic pairs and their history (pb*)
 
 enum class CheckpointEngine : std::uint32_t
 {

@@ -242,6 +242,37 @@ FlowRecords flowRecords(const dem::ParticleFlow* flow)
     return r;
 }
 
+/// The pairs through a periodic image (dem/periodic.h) and their history; empty without periodic
+/// axes.
+void writePeriodicPairs(CheckpointWriter& out, const dem::PeriodicPairs& pairs)
+{
+    out.array("pbFi", pairs.first);
+    out.array("pbSe", pairs.second);
+    out.array("pbSh", pairs.shift);
+    out.array("pbMa", pairs.mass);
+    out.array("pbSp", pairs.history.spring);
+    out.array("pbRo", pairs.history.rolling);
+    out.array("pbMB", pairs.history.formed);
+}
+
+void readPeriodicPairs(CheckpointReader& in, dem::PeriodicPairs& pairs, bool keepRolling,
+                       std::size_t particles)
+{
+    in.array("pbFi", pairs.first);
+    const std::size_t count = pairs.first.size();
+    readSized(in, "pbSe", pairs.second, count);
+    readSized(in, "pbSh", pairs.shift, count);
+    readSized(in, "pbMa", pairs.mass, count);
+    readSized(in, "pbSp", pairs.history.spring, count);
+    readSized(in, "pbRo", pairs.history.rolling, keepRolling ? count : 0);
+    readSized(in, "pbMB", pairs.history.formed, count);
+    pairs.history.keepRolling = keepRolling;
+    for (std::size_t k = 0; k < count; ++k)
+        if (pairs.first[k] >= pairs.second[k] || pairs.second[k] >= particles)
+            in.fail("is corrupt: a periodic pair names particles " + std::to_string(pairs.first[k]) +
+                    " and " + std::to_string(pairs.second[k]));
+}
+
 } // namespace
 
 void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& world, std::uint64_t sceneHash,
@@ -304,6 +335,7 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
     out.array("wTrn", turned);
 
     dem::CheckpointAccess::write(out, world.neighbors, world.pairHistory);
+    writePeriodicPairs(out, world.periodicPairs);
     dem::CheckpointAccess::write(out, world.wallContacts, world.wallHistory);
     out.value("enLg", std::uint8_t(ledger != nullptr));
     if (ledger)
@@ -402,6 +434,7 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
     }
 
     dem::CheckpointAccess::read(in, world.neighbors, world.pairHistory, n);
+    readPeriodicPairs(in, world.periodicPairs, world.pairHistory.keepRolling, n);
     dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, walls);
     world.wallContacts.markActivity(world.walls); // (not saved: the walls' clocks give it)
     const bool hasLedger = in.value<std::uint8_t>("enLg") != 0;

@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "dem/models/normal.h"
 #include "dem/walls/wall.h"
+#include "io/domain_keys.h"
 #include "io/particle_flow_keys.h"
 #include "io/scene_limits.h"
 #include "io/surface_mesh_reader.h"
@@ -318,6 +319,21 @@ void checkInitialOverlaps(dem::World& world, Real tolerance)
             throw InputError(s.str());
         }
     }
+    const auto& periodic = world.periodicPairs; // pairs through a periodic face
+    for (std::size_t k = 0; k < periodic.size(); ++k)
+    {
+        const auto i = periodic.first[k], j = periodic.second[k];
+        const Real overlap =
+            p.radius[i] + p.radius[j] - length(p.position[i] - p.position[j] - periodic.shift[k]);
+        if (overlap > tolerance * std::min(p.radius[i], p.radius[j]))
+        {
+            std::ostringstream s;
+            s << "spheres " << i << " and " << j << " overlap by " << overlap
+              << " m initially across a periodic face (more than " << tolerance
+              << " of the smaller radius; see [simulation] initial_overlap_tolerance)";
+            throw InputError(s.str());
+        }
+    }
     for (std::size_t i = 0; i < p.size(); ++i)
         for (const auto& wall : world.walls)
         {
@@ -435,6 +451,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         readParticleFile(f, world, file, latticeSpheres);
     for (const Lattice& l : lattices)
         fillLattice(l, world);
+    const std::optional<TableReader> domain = readDomain(top, world, scene.measurements);
     scene.flow =
         readParticleFlow(top, world, std::max<std::uint64_t>(1, std::llround(flowInterval / scene.dt)));
     top.finish();
@@ -448,7 +465,18 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     scene.vtkFormat = chooseVtkFormat(vtkFormat, static_cast<std::size_t>(std::fmin(expected, 1e12)));
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
-    checkInitialOverlaps(world, overlapTolerance); // also builds the pair table
+    try
+    {
+        checkInitialOverlaps(world, overlapTolerance); // also builds the pair table
+    }
+    catch (const dem::PeriodicBoxError& e)
+    {
+        if (!domain)
+            throw;
+        std::ostringstream message;
+        message << "is too close to 'min': " << e.what();
+        domain->fail("max", message.str());
+    }
     for (auto& pair : pairs)
         applyPairOverride(pair, world);
     return scene;

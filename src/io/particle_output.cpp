@@ -49,7 +49,10 @@ void ParticleRecorder::record(const dem::World& world)
     rows.reserve(kChunk + 512);
     for (std::size_t i = 0; i < p.size(); ++i)
     {
-        const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angularVelocity[i];
+        // (Wrapped into a periodic box: between list rebuilds a particle may stand up to skin/2
+        // outside it, dem/periodic.h.)
+        const Vec3 x = dem::wrapPosition(world.domain, p.position[i]);
+        const Vec3 &v = p.velocity[i], &w = p.angularVelocity[i];
         rows += time;
         rows += ',';
         rows += std::to_string(p.id[i]);
@@ -101,7 +104,11 @@ void ParticleRecorder::writeVtp(const dem::World& world, const std::filesystem::
         return flat.data();
     };
     out << "<Points>\n";
-    arrays.float64(out, "", 3, vectors(p.position), 3 * n);
+    std::vector<Vec3> wrapped; // positions wrapped into a periodic box (dem/periodic.h)
+    if (world.domain.any())
+        for (const Vec3& x : p.position)
+            wrapped.push_back(dem::wrapPosition(world.domain, x));
+    arrays.float64(out, "", 3, vectors(world.domain.any() ? wrapped : p.position), 3 * n);
     out << "</Points>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
     std::vector<std::int64_t> ids(n);
     for (std::size_t i = 0; i < n; ++i)

@@ -1,6 +1,7 @@
 // Output of a DEM run, written between steps by the driver (never inside the step):
 //   DIR/particles.csv        t,id,x,y,z,vx,vy,vz,wx,wy,wz (SI units) at every output time (id: the
-//                            particle's stable id, ParticleStore::id), each
+//                            particle's stable id, ParticleStore::id; positions wrapped into the
+//                            box along periodic axes, dem/periodic.h), each
 //                            number in its shortest round-trip form (reads back to the same bits)
 //   DIR/particles_NNNNNN.vtp ParaView PolyData per output (id, radius, velocity, angular_velocity;
 //                            each file its own particle count),

@@ -334,6 +334,25 @@ std::vector<std::string> TableReader::strings(std::string_view key)
     return out;
 }
 
+std::vector<bool> TableReader::booleans(std::string_view key)
+{
+    std::vector<bool> out;
+    const toml::node* n = node(key);
+    if (!n)
+        return out;
+    const toml::array* a = n->as_array();
+    if (!a || a->empty())
+        fail(key, "must be a non-empty array of booleans (true or false)");
+    for (const auto& element : *a)
+    {
+        const auto v = element.value<bool>();
+        if (!v || !element.is_boolean())
+            fail(key, "must be an array of booleans (true or false)");
+        out.push_back(*v);
+    }
+    return out;
+}
+
 Vec3 TableReader::vec3(std::string_view key, Vec3 defaultValue)
 {
     return optionalVec3(key).value_or(defaultValue);

@@ -45,6 +45,8 @@ class TableReader
     std::vector<Real> numbers(std::string_view key);
     /// An array of strings (empty if the key is absent).
     std::vector<std::string> strings(std::string_view key);
+    /// An array of booleans (empty if the key is absent).
+    std::vector<bool> booleans(std::string_view key);
 
     std::optional<TableReader> table(std::string_view key);
     std::vector<TableReader> arrayOfTables(std::string_view key);

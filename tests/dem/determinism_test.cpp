@@ -194,6 +194,56 @@ TEST(Determinism, AdvanceGivesTheBitsOfStepCalls)
     }
 }
 
+/// The jostling box made periodic in x and y (its four side walls taken away): pairs touch through
+/// the faces, particles wrap, and the pairs move between the neighbour list and the periodic pairs
+/// (dem/periodic.h). The same bits on one thread with step() and the scalar kernel as on two and
+/// three threads with advance() and the lane kernel.
+TEST(Determinism, APeriodicBoxGivesTheSameBitsOnOneTwoAndThreeThreads)
+{
+    const auto run = [](int threads, bool advanced)
+    {
+        const exec::ThreadCountOverride loops(threads);
+        World world = jostlingBox(true);
+        world.walls.erase(world.walls.begin(), world.walls.begin() + 4); // the floor stays
+        const Real box = 13 * 2.05e-3;
+        world.domain.min = {0, 0, 0};
+        world.domain.max = {box, box, box};
+        world.domain.periodic = {true, true, false};
+        world.exec.batchedContactKernel = advanced;
+        std::size_t throughFaces = 0;
+        for (int s = 0; s < 10; ++s)
+        {
+            if (advanced)
+                advance(world, 1e-5, 100);
+            else
+                for (int k = 0; k < 100; ++k)
+                    step(world, 1e-5);
+            for (const std::uint8_t formed : world.periodicPairs.history.formed)
+                throughFaces += formed;
+        }
+        return std::pair{std::move(world), throughFaces};
+    };
+    const auto [one, throughFaces] = run(1, false);
+    EXPECT_GT(throughFaces, 100u); // contacts through the faces took part
+    for (const int threads : {2, 3})
+    {
+        const auto [other, faces] = run(threads, true);
+        EXPECT_EQ(faces, throughFaces) << threads;
+        EXPECT_TRUE(sameBits(one.particles.position, other.particles.position)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.velocity, other.particles.velocity)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.angularVelocity, other.particles.angularVelocity)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.force, other.particles.force)) << threads;
+        EXPECT_TRUE(sameBits(one.particles.torque, other.particles.torque)) << threads;
+        EXPECT_TRUE(sameBits(one.pairHistory.spring, other.pairHistory.spring)) << threads;
+        EXPECT_EQ(one.periodicPairs.first, other.periodicPairs.first) << threads;
+        EXPECT_EQ(one.periodicPairs.second, other.periodicPairs.second) << threads;
+        EXPECT_TRUE(sameBits(one.periodicPairs.history.spring, other.periodicPairs.history.spring))
+            << threads;
+        EXPECT_EQ(one.health.maxOverlapRatio, other.health.maxOverlapRatio) << threads;
+        EXPECT_EQ(one.health.touchingPairs, other.health.touchingPairs) << threads;
+    }
+}
+
 /// advance() stops after the first step whose state is not finite, or whose overlap exceeds the
 /// limit, and says how many steps it did.
 TEST(Determinism, AdvanceStopsAfterABadStep)

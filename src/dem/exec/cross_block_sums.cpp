@@ -67,7 +67,8 @@ void addCrossBlockForces(World& world, std::size_t begin, std::size_t end)
     const NeighborList& pairs = world.neighbors;
     if (pairs.incomingStart.size() != p.size() + 1) // no list built (no particles)
         return;
-    if (pairs.size() == 0) // no pair slots (one ball on a turntable): the sums were not written
+    if (pairs.size() == 0 && world.periodicPairs.empty()) // no pairs (one ball on a turntable): the
+                                                          // sums were not written
     {
         for (std::size_t i = begin; i < end; ++i)
             p.force[i] = p.torque[i] = Vec3{};
