@@ -30,10 +30,6 @@ springs, normals, turned = nonzero_doubles(final["wcTS"]), nonzero_doubles(final
 print(f"mesh final state: non-zero wall springs {springs}, slot normals {normals}, "
       f"turned {struct.unpack('<d', turned)[0]:.6g} rad")
 check(springs > 20 and normals > 20, "too little mesh contact history to test")
-for stop in (3337, 6000):
-    run(f"split{stop}", "--threads", "1", "--stop-at-step", str(stop))
-    run(f"split{stop}", "--threads", "2", "--restart", f"{out}/split{stop}/checkpoint.bin")
-    rc.same_state(f"{out}/straight/checkpoint.bin", f"{out}/split{stop}/checkpoint.bin", f"stopped at {stop}")
-    rc.same_files("straight", f"split{stop}", ("particles.csv", "thermo.csv", "walls.csv"), f"stopped at {stop}")
+rc.stop_and_restart(scene, (3337, 6000), ("particles.csv", "thermo.csv", "walls.csv"))
 
 sys.exit(rc.finish("restart with a mesh wall"))

@@ -28,10 +28,6 @@ final = records(f"{out}/straight/checkpoint.bin")
 springs, rolling = nonzero_doubles(final["pbSp"]), nonzero_doubles(final["pbRo"])
 print(f"periodic final state: non-zero springs of pairs through a face {springs}, rolling {rolling}")
 check(springs > 20 and rolling > 20, "too little history through the periodic faces to test")
-for stop in (3337, 6000):
-    run(f"split{stop}", "--threads", "1", "--stop-at-step", str(stop))
-    run(f"split{stop}", "--threads", "2", "--restart", f"{out}/split{stop}/checkpoint.bin")
-    rc.same_state(f"{out}/straight/checkpoint.bin", f"{out}/split{stop}/checkpoint.bin", f"stopped at {stop}")
-    rc.same_files("straight", f"split{stop}", ("particles.csv", "thermo.csv", "walls.csv"), f"stopped at {stop}")
+rc.stop_and_restart(scene, (3337, 6000), ("particles.csv", "thermo.csv", "walls.csv"))
 
 sys.exit(rc.finish("restart with periodic boundaries"))

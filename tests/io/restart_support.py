@@ -39,6 +39,18 @@ class RestartCheck:
             self.check(open(f"{self.out}/{a}/{name}", "rb").read() == open(f"{self.out}/{b}/{name}", "rb").read(),
                        f"{what}: {name} differs")
 
+    def stop_and_restart(self, scene, stops, names):
+        """For each step in `stops`: a run of `scene` on 1 thread stopped there with a checkpoint,
+        continued on 2 threads, must end in the straight run's state (its directory "straight",
+        run before) and write the same files `names`, byte for byte."""
+        for stop in stops:
+            split = f"split{stop}"
+            self.run(scene, split, "--threads", "1", "--stop-at-step", str(stop))
+            self.run(scene, split, "--threads", "2", "--restart", f"{self.out}/{split}/checkpoint.bin")
+            self.same_state(f"{self.out}/straight/checkpoint.bin", f"{self.out}/{split}/checkpoint.bin",
+                            f"stopped at {stop}")
+            self.same_files("straight", split, names, f"stopped at {stop}")
+
     def finish(self, what):
         print(f"{what}: " + ("OK" if not self.failures else f"{len(self.failures)} failure(s)"))
         return 1 if self.failures else 0
