@@ -83,10 +83,11 @@ def repose_figure(out_dir, case, named):
             label = name.replace("top_mus", "μ_s ").replace("_mur", ", μ_r ") + " mm"
             axes[2].plot(1e3 * pd[:, 0], 1e3 * pd[:, k], lw=1, label=label)
         axes[2].set_aspect("equal")
-        axes[2].set_xlabel("x [mm]")
+        axes[2].set_ylim(0, 1.8 * np.nanmax(1e3 * pd[:, 1:]))
+        axes[2].set_xlabel("x [mm] (first pile of each pair)")
         axes[2].set_ylabel("surface height [mm]")
         axes[2].grid(True, lw=0.3)
-        axes[2].legend(fontsize=7)
+        axes[2].legend(fontsize=6, loc="upper center", ncol=2)
     fig.suptitle(f"{case}: piles in a slot, angle from the flanks' fitted lines", fontsize=10)
     fig.tight_layout()
     return save(fig, out_dir, f"{case}_repose")
