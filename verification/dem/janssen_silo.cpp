@@ -23,7 +23,7 @@
 // the saturated stress) and the last fill's load (5 %). The fill reaches 3 D, where Janssen's load
 // is within 10 % of saturation for K in that range, so the saturation is seen, not extrapolated.
 //
-// Size: in a column of D = 12 d the load saturated more abruptly than the exponential (nearly
+// Size: in a column of D = 12 d the load saturates more abruptly than the exponential (nearly
 // hydrostatic to 0.5 D, flat from 1.7 D; misfit 5.1 %, last fill 8 % off; the same with or
 // without the wall's slide and with stages of 200 or 400), while at D = 16 d Janssen's curve
 // describes it (docs/bulk-checks.md): the section must hold enough spheres across for a continuum
