@@ -2,7 +2,7 @@
 """Draws the verification report: DIR/index.html and PNG figures. The page opens with a summary per
 family of cases (cases, passed, worst error over tolerance) linking to one section per family with
 its figures and its detailed table folded (<details>). Helpers: report_util.py (series, saving),
-report_families.py (FAMILIES, which sorts the cases, and the benchmark families' figures),
+report_families.py (FAMILIES, which sorts the cases, and the benchmark families' figures), report_bulk.py (the bulk checks' figures),
 report_html.py (the page).
 
 Usage: report.py DIR RESULTS_JSON
@@ -44,6 +44,7 @@ import numpy as np  # noqa: E402
 from report_families import (CHUNG_OOI_PANELS, FAMILIES, chung_ooi_force_figure,  # noqa: E402
                              chung_ooi_restitution_figure, chung_ooi_sweep_figure, convergence_figure,
                              dt_sweep_figure, family_of, rolling_frames_figure)
+from report_bulk import bulk_figures  # noqa: E402
 from report_html import write_html  # noqa: E402
 from report_util import column, read_series, save  # noqa: E402
 
@@ -441,6 +442,11 @@ def main():
             if path:
                 figures.append(("convergence", "dt sweeps of the cases (dt, dt/2, dt/4)", title, path))
         used.update((c, "dt_sweep") for c in sweeps)
+
+    # The bulk checks: Beverloo, Janssen, angle of repose.
+    for case, path, names in bulk_figures(out_dir, series):
+        figures.append(("bulk", "", case, path))
+        used.update((case, n) for n in names)
 
     # Everything else: many-ball paths, generic plots.
     for case in sorted(series):

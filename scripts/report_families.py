@@ -34,6 +34,10 @@ FAMILIES = [
      "Type B (viscous) and the absolute-frame type A against closed forms, and the turntable case that separates "
      "the relative and absolute frames. Types A and C: rolling_resistance_stop (single-particle family).",
      ("rolling_resistance_models", "rolling_turntable")),
+    ("bulk", "Bulk checks (many particles against published laws)",
+     "Beverloo's discharge rate through four orifices, Janssen's saturating base load, and the angle of repose "
+     "against rolling and sliding friction (docs/bulk-checks.md).",
+     ("beverloo_", "janssen_", "angle_of_repose")),
     ("convergence", "Convergence orders in dt",
      "Collision, friction and rolling errors at dt, dt/2, dt/4 (more levels where the error scatters); the observed "
      "order against the scheme's.",
