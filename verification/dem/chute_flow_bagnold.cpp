@@ -306,6 +306,17 @@ CaseResult run(const CaseContext& context)
         runs.push_back(runChute(degrees, kTransient, kWindow, context));
     const ChuteRun stop = runChute(17.0, kStopRun, 0.0, context);
 
+    { // the contact time of two flowing beads (m* = m/2) and of a bead on the frozen base (m* = m)
+        const Real m = 2500 * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius, kn = 200, e = 0.88;
+        const Real zeta = -std::log(e) / std::sqrt(kPi * kPi + std::log(e) * std::log(e));
+        auto contactTime = [&](Real reduced)
+        { return kPi / (std::sqrt(kn / reduced) * std::sqrt(1 - zeta * zeta)); };
+        r.notes.push_back(
+            format("contact time %.3g ms (bead pair, %.0f steps), %.3g ms (bead on the base, %.0f "
+                   "steps); k* = kn d / (m g) = %.0f",
+                   1e3 * contactTime(m / 2), contactTime(m / 2) / kDt, 1e3 * contactTime(m),
+                   contactTime(m) / kDt, kn * kDiameter / (m * kG)));
+    }
     std::vector<Profile> profiles;
     for (const ChuteRun& c : runs)
     {
@@ -328,6 +339,14 @@ CaseResult run(const CaseContext& context)
                                  c.degrees, f.height / kDiameter, f.phiBulk, f.amplitude,
                                  f.amplitude * kDiameter / std::sqrt(kG * std::cos(c.degrees * kPi / 180)),
                                  second / gd));
+        Real spread = 0; // standard deviation of the window's samples of the mean flow velocity
+        for (std::size_t k = from; k < to; ++k)
+            spread += (c.meanVelocity[k] - (first + second) / 2) * (c.meanVelocity[k] - (first + second) / 2);
+        spread = std::sqrt(spread / Real(to - from));
+        r.notes.push_back(
+            format("%.0f deg: window halves %.3f and %.3f sqrt(g d); samples' standard deviation "
+                   "%.3f sqrt(g d) (%.1f %%)",
+                   c.degrees, first / gd, second / gd, spread / gd, 100 * spread / ((first + second) / 2)));
         r.notes.push_back(
             format("%.0f deg: relative RMS residual of the fit over %.1f..%.1f d: Bagnold %.4f, "
                    "linear u = B z %.4f",
@@ -353,18 +372,24 @@ CaseResult run(const CaseContext& context)
         }
         r.series.push_back(std::move(s));
     }
-    Real lateSpeed = 0; // the largest mean speed over the last 0.5 s of the stopping run
+    Real lateSpeed = 0, lateVx = 0; // over the last 0.5 s of the stopping run: largest mean speed, mean v_x
+    int late = 0;
     for (std::size_t k = 0; k < stop.time.size(); ++k)
         if (stop.time[k] > kStopRun - 0.5)
+        {
             lateSpeed = std::max(lateSpeed, stop.meanSpeed[k]);
+            lateVx += stop.meanVelocity[k];
+            ++late;
+        }
+    lateVx /= late;
     r.quantities.push_back(absoluteQuantity("17 deg (below the angle of repose): mean speed, last 0.5 s",
                                             "sqrt(g d)", 0, lateSpeed / gd, kStoppedSpeed,
                                             "stopped: the bed moves less than d per 100 sqrt(d/g)"));
     r.notes.push_back(
         format("17 deg: peak mean speed %.4f sqrt(g d), largest over the last 0.5 s %.3g sqrt(g d), "
-               "final %.3g sqrt(g d)",
+               "final %.3g sqrt(g d); mean v_x over the last 0.5 s %.2g sqrt(g d) (no creep down the slope)",
                *std::max_element(stop.meanSpeed.begin(), stop.meanSpeed.end()) / gd, lateSpeed / gd,
-               stop.meanSpeed.back() / gd));
+               stop.meanSpeed.back() / gd, lateVx / gd));
     r.notes.push_back(
         format("trend: bulk phi %.4f (23 deg), %.4f (24 deg), %.4f (25 deg) (Silbert: phi decreases "
                "with th)",
