@@ -1,3 +1,6 @@
+// (Above 500 lines: the general step, the one-particle step and advance() share their stages'
+// helpers here, so that the three paths can be read side by side with the same operations.)
+//
 // The step, read top to bottom (velocity Verlet, LAMMPS/Box2D style):
 //
 //   kick-drift     v(t+dt/2) = v(t) + dt/2 a(t);  w likewise;  x(t+dt) = x(t) + dt v(t+dt/2),
