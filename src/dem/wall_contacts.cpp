@@ -116,7 +116,8 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
                                {
                                    ps.push_back(static_cast<std::uint32_t>(i));
                                    ws.push_back(static_cast<std::uint32_t>(w));
-                                   counts.push_back(0);
+                                   if (anyMesh)
+                                       counts.push_back(0);
                                }
                            }
                    });

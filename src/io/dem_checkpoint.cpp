@@ -95,6 +95,11 @@ struct CheckpointAccess
         in.array("wcDB", w.wallDisplacementAtBuild_);
         in.array("wcMN", w.meshNormal);
         in.array("wcTB", w.wallTurnAtBuild_);
+        // The mesh candidates' triangle lists are not saved: those of the scene's own first build
+        // do not belong to these slots, so the step falls back to the mesh grid (the same
+        // contacts) until the next rebuild makes them again.
+        w.meshTriangleStart.clear();
+        w.meshTriangles.clear();
         const std::size_t slots = w.particle.size();
         bool ok = w.wall.size() == slots && h.spring.size() == slots &&
                   h.rolling.size() == (h.keepRolling ? slots : h.rolling.size()) &&
