@@ -1,6 +1,6 @@
 #include "dem/contact_history.h"
 
-#include "core/resize_exactly.h"
+#include "core/grow_only.h"
 
 #include <algorithm>
 
@@ -15,13 +15,13 @@ void ContactHistoryStore::carry(const std::uint32_t* source, std::size_t count)
     if (keepFormed && formed.size() < oldCount)
         formed.assign(oldCount, 0);
     const std::size_t room = std::max(count, oldCount);
-    resizeExactly(spring, room);
+    resizeGrowOnly(spring, room);
     if (keepRolling)
-        resizeExactly(rolling, room);
+        resizeGrowOnly(rolling, room);
     else
         rolling.clear();
     if (keepFormed)
-        resizeExactly(formed, room);
+        resizeGrowOnly(formed, room);
     else
         formed.clear();
     const auto move = [&](std::size_t to, std::size_t from)

@@ -1,6 +1,6 @@
 #include "dem/neighbor_list.h"
 
-#include "core/resize_exactly.h"
+#include "core/grow_only.h"
 #include "dem/pair_search.h"
 
 #include <algorithm>
@@ -69,10 +69,10 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles, ContactHis
 
     // The rest of each candidate's record, from its slot.
     const std::size_t count = activeSlots.size();
-    resizeExactly(activeFirst, count);
-    resizeExactly(activeSecond, count);
-    resizeExactly(activeMass, count);
-    resizeExactly(activeDeferred, count);
+    resizeGrowOnly(activeFirst, count);
+    resizeGrowOnly(activeSecond, count);
+    resizeGrowOnly(activeMass, count);
+    resizeGrowOnly(activeDeferred, count);
     const Real* const mass = particles.mass.data();
     for (std::size_t a = 0; a < count; ++a)
     {
@@ -98,11 +98,11 @@ void NeighborList::refreshActiveSlots(const ParticleStore& particles, ContactHis
 void NeighborList::selectCandidates(const ParticleStore& particles, const ContactHistoryStore& history)
 {
     // Which slots are within the inner skin, and how many: the new sub-list's arrays are then
-    // sized exactly (push_back would over-allocate up to twice over, and they are never shrunk).
+    // sized once (resizeGrowOnly: never shrunk, grown with an eighth of headroom).
     const Vec3* const x = particles.position.data();
     const Real* const r = particles.radius.data();
     const Real innerSkinReach = innerSkin + reach; // beyond r_i + r_j [m]
-    resizeExactly(within_, first.size());
+    resizeGrowOnly(within_, first.size());
     std::size_t count = 0;
     for (std::size_t k = 0; k < first.size(); ++k)
     {
@@ -113,8 +113,8 @@ void NeighborList::selectCandidates(const ParticleStore& particles, const Contac
     }
     // The old sub-list's slots move to oldSlots_ (slot-to-slot matching reads them).
     oldSlots_.swap(activeSlots);
-    resizeExactly(activeSlots, count);
-    resizeExactly(source_, count);
+    resizeGrowOnly(activeSlots, count);
+    resizeGrowOnly(source_, count);
     const std::size_t oldCount = activeFirst.size();
     std::size_t a = 0, old = 0; // old: the first old candidate not yet matched or passed
     for (std::size_t k = 0; k < first.size(); ++k)

@@ -194,6 +194,14 @@ void findPairsWithin(const ParticleStore& particles, Real search, std::vector<st
                 count[i + 1] = static_cast<std::uint32_t>(scratch.size());
             }
         });
+    // The grids are no longer needed: freed before the chunks are joined (the rebuild's peak).
+    for (ClassGrid& g : grids)
+    {
+        std::vector<std::uint32_t>().swap(g.cellStart);
+        std::vector<std::uint32_t>().swap(g.cellParticles);
+    }
+    std::vector<std::uint32_t>().swap(cellOf);
+    std::vector<std::uint8_t>().swap(classOfParticle);
     std::size_t total = 0;
     for (const auto& part : chunkPartners)
         total += part.size();
