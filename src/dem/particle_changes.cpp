@@ -81,7 +81,11 @@ void addInsertedParticles(World& world, std::size_t from, const ParticleIndex& i
     }
     world.neighbors.appendParticles(p, from);
     if (!first.empty())
+    {
+        // (Rolling springs kept as the pair candidates keep them: an EPSD model is in use.)
+        world.periodicPairs.history.keepRolling = world.pairHistory.keepRolling;
         world.periodicPairs.addPairs(p, world.neighbors.anyFixed, first, second);
+    }
     // Walls: skin/2 of the particle's motion plus up to skin of the wall's (WallContactList).
     world.wallContacts.appendParticles(p, from, world.walls, 1.5 * world.neighbors.skin, world.wallHistory);
 }

@@ -37,34 +37,52 @@ void ParticleIndex::build(const ParticleStore& particles, const NeighborList& li
     for (const Real r : particles.radius)
         radius_ = std::fmax(radius_, r);
     extra_ = extra;
+    cell_ = std::fmax(2 * radius_ + extra + 0.5 * list.skin, 1e-12);
+    // The grid's box: the cover box widened by a cell on each side (every query point lies in the
+    // cover box, so only particles there can be found), or without one the particles' box.
     const bool cover = coverLo.x <= coverHi.x && coverLo.y <= coverHi.y && coverLo.z <= coverHi.z;
-    Vec3 lo = cover ? coverLo : n ? reference[0] : Vec3{}, hi = cover ? coverHi : lo;
+    Vec3 lo = n ? reference[0] : Vec3{}, hi = lo;
+    if (!cover)
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const Vec3& x = reference[i];
+            lo = Vec3{std::fmin(lo.x, x.x), std::fmin(lo.y, x.y), std::fmin(lo.z, x.z)};
+            hi = Vec3{std::fmax(hi.x, x.x), std::fmax(hi.y, x.y), std::fmax(hi.z, x.z)};
+        }
+    // At most 4 cells a particle plus 2^16, and 2^22 in all (a far stray particle must not make
+    // billions of empty cells); counts in floating point, so a non-finite box gives one cell.
+    const Real maxCells = std::fmin(4.0 * Real(n) + 65536, Real(1 << 22));
+    for (;;)
+    {
+        if (cover)
+        {
+            lo = coverLo - Vec3{cell_, cell_, cell_};
+            hi = coverHi + Vec3{cell_, cell_, cell_};
+        }
+        const Real extent[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
+        const bool finite = std::isfinite(extent[0]) && std::isfinite(extent[1]) && std::isfinite(extent[2]);
+        for (int k = 0; k < 3; ++k)
+            n_[k] =
+                finite ? static_cast<std::size_t>(std::fmin(std::floor(extent[k] / cell_) + 1, maxCells)) : 1;
+        if (Real(n_[0]) * Real(n_[1]) * Real(n_[2]) <= maxCells)
+            break;
+        cell_ *= 1.5;
+    }
+    origin_ = lo;
+    head_.assign(n_[0] * n_[1] * n_[2], kEnd);
+    next_.assign(n, kEnd);
     for (std::size_t i = 0; i < n; ++i)
     {
         const Vec3& x = reference[i];
-        lo = Vec3{std::fmin(lo.x, x.x), std::fmin(lo.y, x.y), std::fmin(lo.z, x.z)};
-        hi = Vec3{std::fmax(hi.x, x.x), std::fmax(hi.y, x.y), std::fmax(hi.z, x.z)};
+        if (cover &&
+            !(x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y && x.z >= lo.z && x.z <= hi.z))
+            continue; // (too far from every query to be found)
+        std::size_t c[3];
+        coordinates(x, c);
+        std::uint32_t& head = head_[(c[2] * n_[1] + c[1]) * n_[0] + c[0]];
+        next_[i] = head;
+        head = static_cast<std::uint32_t>(i);
     }
-    origin_ = lo;
-    cell_ = std::fmax(2 * radius_ + extra + 0.5 * list.skin, 1e-12);
-    // At most ~4 cells a particle (a far stray particle must not make billions of empty cells)
-    // plus those of the cover box; counts in floating point, so a non-finite box gives one cell.
-    const Real extent[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
-    const bool finite = std::isfinite(extent[0]) && std::isfinite(extent[1]) && std::isfinite(extent[2]);
-    const auto along = [&](Real e) { return finite ? std::floor(e / cell_) + 1 : Real(1); };
-    const Real coverCells =
-        cover ? along(coverHi.x - coverLo.x) * along(coverHi.y - coverLo.y) * along(coverHi.z - coverLo.z)
-              : 0;
-    const Real maxCells = 4.0 * Real(n) + 4096 + std::fmin(coverCells, Real(1 << 20));
-    while (along(extent[0]) * along(extent[1]) * along(extent[2]) > maxCells)
-        cell_ *= 1.5;
-    for (int k = 0; k < 3; ++k)
-        n_[k] = static_cast<std::size_t>(along(extent[k]));
-    head_.assign(n_[0] * n_[1] * n_[2], kEnd);
-    next_.clear();
-    next_.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-        append(static_cast<std::uint32_t>(i), reference[i]);
     listBuild_ = built ? list.rebuildCount() : ~std::size_t{0};
 }
 

@@ -8,7 +8,8 @@
 // within d of a point has its reference within d + skin/2 of it. The cells are at least as wide
 // as the largest distance a query asks for plus skin/2, so forEachNear's 27 cells hold every such
 // particle. The grid is valid until the neighbour list is rebuilt (NeighborList::rebuildCount);
-// then the next event bins the particles again, O(N) once per rebuild, not per event.
+// then the next event bins the particles near the inserters' regions again (a bounds test over
+// all particles, once per rebuild, not per event).
 //
 // A particle inserted is appended to its cell in O(1) (a linked list per cell). The callers sort
 // or reduce what they find, so the visiting order never reaches the results: a grid rebuilt at
@@ -33,10 +34,11 @@ class ParticleIndex
     bool validFor(const NeighborList& list, std::size_t particleCount, Real newRadius, Real extra) const;
     /// Bins the particles at their references (at their positions if the list is not built for
     /// them; the grid is then valid for this event only) in cells at least 2 R + extra + skin/2
-    /// wide (R [m]: the largest of newRadius and the particles' radii), over their box and the box
-    /// [coverLo, coverHi] [m] where particles will be appended (the inserters' regions; ignored if
-    /// empty), with at most ~4 cells a particle plus the cover box's cells (up to 2^20).
-    /// O(N + cells).
+    /// wide (R [m]: the largest of newRadius and the particles' radii). With a cover box
+    /// [coverLo, coverHi] [m] (the inserters' regions: every query point and every particle
+    /// appended lies in it), only the particles within a cell of it are binned; without (an
+    /// empty box), all. At most 4 cells a particle plus 2^16, and 2^22 in all. O(N) with a small
+    /// constant (a bounds test a particle) plus the cells and the particles binned.
     void build(const ParticleStore& particles, const NeighborList& list, Real newRadius, Real extra,
                const Vec3& coverLo, const Vec3& coverHi);
     /// Appends particle i (the next index, radius at most newRadius) at reference x [m] (its
