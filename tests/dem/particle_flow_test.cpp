@@ -1,7 +1,9 @@
 // Particles in and out (dem/particle_flow.h, dem/particle_changes.h) and frozen particles: the
 // radius distributions' moments, insertion counts and rates over a window, no overlaps, the same
 // particles on 1 and 2 threads, outlet counts and mass, history carried through a removal, a
-// frozen particle held in place and seen as a partner of infinite mass.
+// frozen particle held in place and seen as a partner of infinite mass; insertion without a
+// rebuild lists exactly the pairs and walls within its search distances, and an inserted
+// particle's contact keeps the spring of the law through a removal that renames it.
 #include "dem/particle_changes.h"
 #include "dem/particle_flow.h"
 #include "dem/world.h"
