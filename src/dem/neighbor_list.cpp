@@ -296,4 +296,19 @@ void NeighborList::rebuild(const ParticleStore& particles, ContactHistoryStore& 
             incomingEntry[fill[second[k]]++] = deferredIndex[k];
 }
 
+void NeighborList::appendParticles(const ParticleStore& particles, std::size_t from)
+{
+    const std::size_t n = particles.size();
+    const bool activeKept = positionAtActiveBuild_.size() == positionAtBuild_.size();
+    for (std::size_t i = from; i < n; ++i)
+    {
+        positionAtBuild_.push_back(particles.position[i]);
+        if (activeKept)
+            positionAtActiveBuild_.push_back(particles.position[i]);
+        // No slots and no incoming cross-block entries: the offsets repeat their last value.
+        firstStart.push_back(firstStart.back());
+        incomingStart.push_back(incomingStart.back());
+    }
+}
+
 } // namespace veridem::dem

@@ -132,6 +132,18 @@ class NeighborList
     static constexpr std::uint32_t kGone = 0xffffffffu;
     void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
 
+    /// Takes in the particles [from, particles.size()) appended between steps without a rebuild
+    /// (dem/particle_changes.h, addInsertedParticles): they have no slots, and their motion is
+    /// measured from their current positions (the reference of the rebuild criterion). Their pairs
+    /// are the caller's (PeriodicPairs, evaluated after the pair stage) until the next rebuild.
+    /// O(particles appended).
+    void appendParticles(const ParticleStore& particles, std::size_t from);
+    /// True if the list was built (or appended to) for `particleCount` particles.
+    bool builtFor(std::size_t particleCount) const
+    {
+        return positionAtBuild_.size() == particleCount && firstStart.size() == particleCount + 1;
+    }
+
     /// The candidate of slot k (its entry in the history store), or kNotCandidate if it is not
     /// one (then it is open). A look-up by (i, j), for tests and output, not the force loop.
     static constexpr std::size_t kNotCandidate = ~std::size_t{0};

@@ -47,4 +47,47 @@ void removeParticles(World& world, std::vector<std::uint32_t> doomed)
     world.periodicPairs.renameParticles(newIndex);
 }
 
+bool insertsWithoutRebuild(const World& world, std::size_t particleCount)
+{
+    if (!world.prepared || world.domain.any() || !world.neighbors.builtFor(particleCount) ||
+        world.wallContacts.start.size() != particleCount + 1 || world.pairs.count() != world.materials.size())
+        return false;
+    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+        for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
+            if (world.pairs(a, b).normalModel == NormalModel::Jkr)
+                return false;
+    return true;
+}
+
+void addInsertedParticles(World& world, std::size_t from, const ParticleIndex& index)
+{
+    const ParticleStore& p = world.particles;
+    const Real search = insertedPairSearch(world.neighbors);
+    std::vector<std::uint32_t> first, second;
+    for (std::size_t i = from; i < p.size(); ++i)
+    {
+        const Vec3 xi = p.position[i];
+        const Real ri = p.radius[i];
+        index.forEachNear(xi,
+                          [&](std::uint32_t j)
+                          {
+                              const Real within = ri + p.radius[j] + search;
+                              if (j < i && lengthSquared(xi - p.position[j]) < within * within)
+                              {
+                                  first.push_back(j);
+                                  second.push_back(static_cast<std::uint32_t>(i));
+                              }
+                          });
+    }
+    world.neighbors.appendParticles(p, from);
+    if (!first.empty())
+    {
+        // (Rolling springs kept as the pair candidates keep them: an EPSD model is in use.)
+        world.periodicPairs.history.keepRolling = world.pairHistory.keepRolling;
+        world.periodicPairs.addPairs(p, world.neighbors.anyFixed, first, second);
+    }
+    // Walls: skin/2 of the particle's motion plus up to skin of the wall's (WallContactList).
+    world.wallContacts.appendParticles(p, from, world.walls, 1.5 * world.neighbors.skin, world.wallHistory);
+}
+
 } // namespace veridem::dem

@@ -146,92 +146,6 @@ Real ParticleFlow::largestRadius() const
 namespace
 {
 
-/// The particles near one inserter's region on a uniform grid of cells, each at least as wide as
-/// the largest sum of two radii (existing or new), so a sphere can only overlap spheres of its own and the 26
-/// surrounding cells. Inserted spheres are added as they come.
-class InsertionGrid
-{
-  public:
-    InsertionGrid(const World& world, const FlowRegion& region, Real newRadius)
-    {
-        const ParticleStore& p = world.particles;
-        Real largest = 0;
-        for (const Real r : p.radius)
-            largest = std::max(largest, r);
-        region.bounds(lo_, hi_);
-        const Real margin = largest + newRadius;
-        lo_ = lo_ - Vec3{margin, margin, margin};
-        hi_ = hi_ + Vec3{margin, margin, margin};
-        for (std::size_t i = 0; i < p.size(); ++i)
-        {
-            const Vec3& x = p.position[i];
-            if (x.x >= lo_.x && x.x <= hi_.x && x.y >= lo_.y && x.y <= hi_.y && x.z >= lo_.z && x.z <= hi_.z)
-            {
-                position_.push_back(x);
-                radius_.push_back(p.radius[i]);
-            }
-        }
-        cell_ = std::max(2 * std::max(largest, newRadius), 1e-12); // (new spheres are added too)
-        const Real cellsWanted = 4.0 * Real(position_.size()) + 4096;
-        while (count(hi_.x - lo_.x) * count(hi_.y - lo_.y) * count(hi_.z - lo_.z) > cellsWanted)
-            cell_ *= 1.5;
-        n_[0] = static_cast<std::size_t>(count(hi_.x - lo_.x));
-        n_[1] = static_cast<std::size_t>(count(hi_.y - lo_.y));
-        n_[2] = static_cast<std::size_t>(count(hi_.z - lo_.z));
-        cells_.resize(n_[0] * n_[1] * n_[2]);
-        for (std::size_t k = 0; k < position_.size(); ++k)
-            cells_[cellOf(position_[k])].push_back(static_cast<std::uint32_t>(k));
-    }
-
-    /// True if a sphere (x, r) [m] overlaps none of the grid's spheres.
-    bool free(const Vec3& x, Real r) const
-    {
-        std::size_t c[3];
-        coordinates(x, c);
-        for (std::size_t z = c[2] ? c[2] - 1 : 0; z <= std::min(c[2] + 1, n_[2] - 1); ++z)
-            for (std::size_t y = c[1] ? c[1] - 1 : 0; y <= std::min(c[1] + 1, n_[1] - 1); ++y)
-                for (std::size_t xi = c[0] ? c[0] - 1 : 0; xi <= std::min(c[0] + 1, n_[0] - 1); ++xi)
-                    for (const std::uint32_t k : cells_[(z * n_[1] + y) * n_[0] + xi])
-                    {
-                        const Real reach = r + radius_[k];
-                        if (lengthSquared(x - position_[k]) < reach * reach)
-                            return false;
-                    }
-        return true;
-    }
-    void add(const Vec3& x, Real r)
-    {
-        position_.push_back(x);
-        radius_.push_back(r);
-        cells_[cellOf(x)].push_back(static_cast<std::uint32_t>(position_.size() - 1));
-    }
-
-  private:
-    Real count(Real extent) const { return std::floor(extent / cell_) + 1; }
-    void coordinates(const Vec3& x, std::size_t* c) const
-    {
-        const Real v[3] = {x.x - lo_.x, x.y - lo_.y, x.z - lo_.z};
-        for (int k = 0; k < 3; ++k)
-        {
-            const Real q = v[k] / cell_;
-            c[k] = q >= 0 && q < Real(n_[k]) ? static_cast<std::size_t>(q) : q >= Real(n_[k]) ? n_[k] - 1 : 0;
-        }
-    }
-    std::size_t cellOf(const Vec3& x) const
-    {
-        std::size_t c[3];
-        coordinates(x, c);
-        return (c[2] * n_[1] + c[1]) * n_[0] + c[0];
-    }
-
-    Vec3 lo_, hi_;
-    Real cell_ = 0;
-    std::size_t n_[3] = {1, 1, 1};
-    std::vector<Vec3> position_;
-    std::vector<Real> radius_;
-    std::vector<std::vector<std::uint32_t>> cells_;
-};
-
 /// True while the inserter is behind its schedule at time t [s].
 bool behind(const Inserter& in, Real t, Real dt)
 {
@@ -255,13 +169,25 @@ bool behind(const Inserter& in, Real t, Real dt)
     return false;
 }
 
-/// Inserts the particles `in` owes at time t; returns how many.
-std::size_t insert(World& world, Inserter& in, std::uint32_t& nextId, Real t, Real dt)
+/// True if a sphere (x, r) [m] overlaps no particle (`index` holds them all).
+bool freeOfParticles(const ParticleStore& p, const ParticleIndex& index, const Vec3& x, Real r)
+{
+    bool free = true;
+    index.forEachNear(x,
+                      [&](std::uint32_t j)
+                      {
+                          const Real reach = r + p.radius[j];
+                          free = free && !(lengthSquared(x - p.position[j]) < reach * reach);
+                      });
+    return free;
+}
+
+/// Inserts the particles `in` owes at time t, each appended to `index`; returns how many.
+std::size_t insert(World& world, Inserter& in, ParticleIndex& index, std::uint32_t& nextId, Real t, Real dt)
 {
     if (!behind(in, t, dt))
         return 0;
     ParticleStore& p = world.particles;
-    InsertionGrid grid(world, in.region, in.radius.largest());
     std::size_t added = 0;
     while (behind(in, t, dt))
     {
@@ -285,7 +211,7 @@ std::size_t insert(World& world, Inserter& in, std::uint32_t& nextId, Real t, Re
         {
             if (!in.region.sample(in.random, r, x))
                 break;
-            placed = grid.free(x, r);
+            placed = freeOfParticles(p, index, x, r);
             for (std::size_t w = 0; placed && w < world.walls.size(); ++w)
                 placed = !wallGap(world.walls[w], x, r).touching;
         }
@@ -302,7 +228,7 @@ std::size_t insert(World& world, Inserter& in, std::uint32_t& nextId, Real t, Re
         }
         p.add(x, v, {}, r, world.materials[material].density, material);
         p.id.back() = nextId++;
-        grid.add(x, r);
+        index.append(static_cast<std::uint32_t>(p.size() - 1), x);
         ++in.inserted;
         in.insertedMass += p.mass.back();
         ++added;
@@ -315,7 +241,7 @@ std::size_t insert(World& world, Inserter& in, std::uint32_t& nextId, Real t, Re
 bool ParticleFlow::apply(World& world, Real dt)
 {
     const Real t = world.time;
-    bool changed = false;
+    bool removed = false;
     if (!outlets.empty())
     {
         std::vector<std::uint32_t> doomed;
@@ -336,14 +262,42 @@ bool ParticleFlow::apply(World& world, Real dt)
         if (!doomed.empty())
         {
             removeParticles(world, std::move(doomed));
-            changed = true;
+            rebuildAfterParticleChange(world);
+            removed = true;
         }
     }
+    bool due = false;
+    for (const Inserter& in : inserters)
+        due = due || behind(in, t, dt);
+    if (!due)
+        return removed;
+    // The grid of the particles for the overlap test and the new pairs (particle_index.h), kept
+    // from the last event while the contact lists were not rebuilt.
+    ParticleStore& p = world.particles;
+    const std::size_t before = p.size();
+    const Real newRadius = largestRadius(), extra = insertedPairSearch(world.neighbors);
+    if (!index.validFor(world.neighbors, before, newRadius, extra))
+    {
+        Vec3 lo{1, 1, 1}, hi{0, 0, 0}; // (empty)
+        for (const Inserter& in : inserters)
+        {
+            Vec3 a, b;
+            in.region.bounds(a, b);
+            const bool first = lo.x > hi.x;
+            lo = first ? a : Vec3{std::fmin(lo.x, a.x), std::fmin(lo.y, a.y), std::fmin(lo.z, a.z)};
+            hi = first ? b : Vec3{std::fmax(hi.x, b.x), std::fmax(hi.y, b.y), std::fmax(hi.z, b.z)};
+        }
+        index.build(p, world.neighbors, newRadius, extra, lo, hi);
+    }
     for (Inserter& in : inserters)
-        changed = insert(world, in, nextId, t, dt) > 0 || changed;
-    if (changed)
+        insert(world, in, index, nextId, t, dt);
+    if (p.size() == before)
+        return removed;
+    if (insertsWithoutRebuild(world, before))
+        addInsertedParticles(world, before, index);
+    else
         rebuildAfterParticleChange(world);
-    return changed;
+    return true;
 }
 
 } // namespace veridem::dem

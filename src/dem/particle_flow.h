@@ -6,12 +6,16 @@
 //
 // Insertion draws every random number from the inserter's own generator (dem/random.h), serially,
 // so the particles are the same for any thread count. A new particle overlaps no particle and no
-// wall: the candidate position is tested against the particles near the region on a cell grid
-// built once per insertion event (and growing with the particles it inserts) and against every
+// wall: the candidate position is tested against the particles near it on a grid kept from one
+// event to the next (ParticleIndex, rebuilt only after the contact lists were) and against every
 // wall; after `kAttempts` failed positions the region is full: the inserter says so once
-// (stderr) and tries again at the next event.
+// (stderr) and tries again at the next event. The new particles join the contact lists without a
+// rebuild where the scene allows it (dem/particle_changes.h, addInsertedParticles), so an event
+// that only inserts costs its own particles. An event that removes particles rebuilds the lists
+// (removeParticles), and the outlets test every particle's centre: O(N), cheap beside a step.
 #pragma once
 
+#include "dem/particle_index.h"
 #include "dem/random.h"
 #include "dem/world.h"
 
@@ -114,13 +118,18 @@ struct ParticleFlow
     std::vector<Outlet> outlets;
     std::uint64_t everySteps = 1; // act at steps that are multiples of this
     std::uint32_t nextId = 0;     // the id of the next inserted particle (checkpointed)
+    // The particles on a grid for insertion, kept between events (not checkpointed: rebuilt when
+    // missing, with the same results).
+    ParticleIndex index;
 
     bool empty() const { return inserters.empty() && outlets.empty(); }
     /// The largest radius an inserter can draw [m] (0 if none).
     Real largestRadius() const;
     /// Outlets, then inserters, at world.time (dt [s]: a time within half a step of a window's
-    /// start counts as in it). If any particle left or came, the contact lists are rebuilt
-    /// (rebuildAfterParticleChange). Returns true if the particles changed.
+    /// start counts as in it). If any particle left, the contact lists are rebuilt
+    /// (rebuildAfterParticleChange); particles inserted join them without a rebuild
+    /// (addInsertedParticles) where insertsWithoutRebuild allows, else with one. Returns true if
+    /// the particles changed.
     bool apply(World& world, Real dt);
 };
 

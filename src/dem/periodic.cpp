@@ -278,41 +278,7 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
 
     // The old pairs that may be in contact and are no longer periodic join the neighbour list's
     // candidates (a merge by key), which its rebuild carries to the new slots by (i, j).
-    std::vector<std::size_t> leaving;
-    for (std::size_t k = 0; k < first.size(); ++k)
-        if (!continued[k] && history.formed[k])
-            leaving.push_back(k);
-    if (!leaving.empty())
-    {
-        ContactHistoryStore merged(true);
-        merged.keepRolling = pairHistory.keepRolling;
-        std::vector<std::uint32_t> mergedFirst, mergedSecond;
-        std::size_t a = 0;
-        const auto take = [&](const ContactHistoryStore& from, std::size_t e, bool rolling, std::uint32_t i,
-                              std::uint32_t j)
-        {
-            mergedFirst.push_back(i);
-            mergedSecond.push_back(j);
-            merged.spring.push_back(from.spring[e]);
-            if (merged.keepRolling)
-                merged.rolling.push_back(rolling ? from.rolling[e] : Vec3{});
-            merged.formed.push_back(from.formed[e]);
-        };
-        for (const std::size_t k : leaving)
-        {
-            const std::uint64_t key = pairKey(first[k], second[k]);
-            for (; a < candidates && pairKey(neighbors.activeFirst[a], neighbors.activeSecond[a]) < key; ++a)
-                take(pairHistory, a, mainRolling, neighbors.activeFirst[a], neighbors.activeSecond[a]);
-            if (a < candidates && pairKey(neighbors.activeFirst[a], neighbors.activeSecond[a]) == key)
-                ++a; // (cannot happen: a pair is direct or through an image; the image's history wins)
-            take(history, k, oldRolling, first[k], second[k]);
-        }
-        for (; a < candidates; ++a)
-            take(pairHistory, a, mainRolling, neighbors.activeFirst[a], neighbors.activeSecond[a]);
-        neighbors.activeFirst.swap(mergedFirst);
-        neighbors.activeSecond.swap(mergedSecond);
-        pairHistory = std::move(merged);
-    }
+    handOverFormed(continued, neighbors, pairHistory);
 
     first.swap(newFirst);
     second.swap(newSecond);
@@ -327,6 +293,102 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
         if (anyFixed && (particles.fixed[i] || particles.fixed[j]))
             mass[k] = particles.fixed[i] ? mj : mi;
     }
+}
+
+void PeriodicPairs::handOverFormed(const std::vector<std::uint8_t>& continued, NeighborList& neighbors,
+                                   ContactHistoryStore& pairHistory) const
+{
+    const bool oldRolling = history.keepRolling && history.rolling.size() == history.size();
+    const bool mainRolling = pairHistory.keepRolling && pairHistory.rolling.size() == pairHistory.size();
+    const std::size_t candidates = std::min(neighbors.activeFirst.size(), pairHistory.size());
+    std::vector<std::size_t> leaving;
+    for (std::size_t k = 0; k < first.size(); ++k)
+        if (!continued[k] && history.formed[k])
+            leaving.push_back(k);
+    if (leaving.empty())
+        return;
+    ContactHistoryStore merged(true);
+    merged.keepRolling = pairHistory.keepRolling;
+    std::vector<std::uint32_t> mergedFirst, mergedSecond;
+    std::size_t a = 0;
+    const auto take =
+        [&](const ContactHistoryStore& from, std::size_t e, bool rolling, std::uint32_t i, std::uint32_t j)
+    {
+        mergedFirst.push_back(i);
+        mergedSecond.push_back(j);
+        merged.spring.push_back(from.spring[e]);
+        if (merged.keepRolling)
+            merged.rolling.push_back(rolling ? from.rolling[e] : Vec3{});
+        merged.formed.push_back(from.formed[e]);
+    };
+    for (const std::size_t k : leaving)
+    {
+        const std::uint64_t key = pairKey(first[k], second[k]);
+        for (; a < candidates && pairKey(neighbors.activeFirst[a], neighbors.activeSecond[a]) < key; ++a)
+            take(pairHistory, a, mainRolling, neighbors.activeFirst[a], neighbors.activeSecond[a]);
+        if (a < candidates && pairKey(neighbors.activeFirst[a], neighbors.activeSecond[a]) == key)
+            ++a; // (cannot happen: a pair is a slot's or this list's, never both; this list's wins)
+        take(history, k, oldRolling, first[k], second[k]);
+    }
+    for (; a < candidates; ++a)
+        take(pairHistory, a, mainRolling, neighbors.activeFirst[a], neighbors.activeSecond[a]);
+    neighbors.activeFirst.swap(mergedFirst);
+    neighbors.activeSecond.swap(mergedSecond);
+    pairHistory = std::move(merged);
+}
+
+void PeriodicPairs::handOver(NeighborList& neighbors, ContactHistoryStore& pairHistory)
+{
+    handOverFormed(std::vector<std::uint8_t>(first.size(), 0), neighbors, pairHistory);
+    clear();
+}
+
+void PeriodicPairs::addPairs(const ParticleStore& particles, bool anyFixed,
+                             const std::vector<std::uint32_t>& newFirst,
+                             const std::vector<std::uint32_t>& newSecond)
+{
+    struct Entry
+    {
+        std::uint64_t key;
+        std::uint32_t from; // old pair, or size() + new pair
+    };
+    const std::size_t old = first.size(), added = newFirst.size();
+    std::vector<Entry> order(old + added);
+    for (std::size_t k = 0; k < old; ++k)
+        order[k] = {pairKey(first[k], second[k]), static_cast<std::uint32_t>(k)};
+    for (std::size_t k = 0; k < added; ++k)
+        order[old + k] = {pairKey(newFirst[k], newSecond[k]), static_cast<std::uint32_t>(old + k)};
+    std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
+    PeriodicPairs merged;
+    merged.history.keepRolling = history.keepRolling;
+    const bool rolling = history.keepRolling && history.rolling.size() == history.size();
+    for (const Entry& e : order)
+    {
+        const auto i = static_cast<std::uint32_t>(e.key >> 32), j = static_cast<std::uint32_t>(e.key);
+        merged.first.push_back(i);
+        merged.second.push_back(j);
+        if (e.from < old)
+        {
+            merged.shift.push_back(shift[e.from]);
+            merged.mass.push_back(mass[e.from]);
+            merged.history.spring.push_back(history.spring[e.from]);
+            if (history.keepRolling)
+                merged.history.rolling.push_back(rolling ? history.rolling[e.from] : Vec3{});
+            merged.history.formed.push_back(history.formed[e.from]);
+            continue;
+        }
+        const Real mi = particles.mass[i], mj = particles.mass[j];
+        Real m = effectivePairMass(mi, mj);
+        if (anyFixed && (particles.fixed[i] || particles.fixed[j]))
+            m = particles.fixed[i] ? mj : mi;
+        merged.shift.push_back(Vec3{}); // a direct pair: no image
+        merged.mass.push_back(m);
+        merged.history.spring.push_back(Vec3{});
+        if (history.keepRolling)
+            merged.history.rolling.push_back(Vec3{});
+        merged.history.formed.push_back(0);
+    }
+    *this = std::move(merged);
 }
 
 void PeriodicPairs::renameParticles(const std::vector<std::uint32_t>& newIndex)

@@ -1,5 +1,8 @@
 // Periodic boundaries per axis: the domain box, the wrap of positions, and the pairs that touch
-// across a periodic face (their minimum image).
+// across a periodic face (their minimum image). The same list also holds, with shift 0, the pairs
+// of particles inserted between steps until the next rebuild of the contact lists takes them into
+// the neighbour list (dem/particle_changes.h, addInsertedParticles): a list of pairs evaluated
+// after the pair stage through the same law, with history carried by (i, j).
 //
 // Design (docs/architecture.md, "Periodic boundaries"). Positions are wrapped into the box only
 // when the contact lists are rebuilt (World's rebuildContactLists), so between rebuilds a particle
@@ -91,7 +94,24 @@ class PeriodicPairs
     /// order flips has its springs and shift negated; a pair with a removed particle is dropped.
     void renameParticles(const std::vector<std::uint32_t>& newIndex);
 
+    /// Adds the direct pairs (newFirst[k] < newSecond[k], shift 0, fresh history) of particles
+    /// inserted between steps without a rebuild (dem/particle_changes.h, addInsertedParticles),
+    /// none of them already listed; the list stays sorted by (i, j). m* as NeighborList's
+    /// (`anyFixed`: some particle is frozen). O((pairs listed + added) log).
+    void addPairs(const ParticleStore& particles, bool anyFixed, const std::vector<std::uint32_t>& newFirst,
+                  const std::vector<std::uint32_t>& newSecond);
+    /// Without periodic axes, at a rebuild of the contact lists: every pair that may be in contact
+    /// joins `neighbors`' candidates with its history (as rebuild() hands over the pairs that stop
+    /// being periodic), and the list is emptied. Call before NeighborList::rebuild.
+    void handOver(NeighborList& neighbors, ContactHistoryStore& pairHistory);
+
     void clear();
+
+  private:
+    /// The pairs k not `continued` that may be in contact (history.formed) merged, by key, into
+    /// `neighbors`' candidates and `pairHistory`.
+    void handOverFormed(const std::vector<std::uint8_t>& continued, NeighborList& neighbors,
+                        ContactHistoryStore& pairHistory) const;
 };
 
 /// Wraps every particle's position (and its position row) into the box along the periodic axes.

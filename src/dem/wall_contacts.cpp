@@ -188,6 +188,65 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
         start[i + 1] += start[i];
 }
 
+void WallContactList::appendParticles(const ParticleStore& particles, std::size_t from,
+                                      const std::vector<Wall>& walls, Real reach,
+                                      ContactHistoryStore& history)
+{
+    // (The loop of rebuild() for one particle, appending; the triangle lists only where they are
+    // kept: after a restore the step uses the mesh grids until the next rebuild.)
+    const bool triangleLists = meshTriangleStart.size() == particle.size() + 1;
+    const bool normals = !meshNormal.empty() || !wallTurnAtBuild_.empty();
+    std::vector<std::uint32_t> near;
+    for (std::size_t i = from; i < particles.size(); ++i)
+    {
+        const Vec3& x = particles.position[i];
+        const Real r = particles.radius[i];
+        for (std::size_t w = 0; w < walls.size(); ++w)
+        {
+            const Wall& candidate = walls[w];
+            const auto* mesh = std::get_if<MeshShape>(&candidate.shape);
+            if (mesh && wallActive(candidate))
+            {
+                near.clear();
+                const std::size_t count = meshTrianglesNear(*mesh, candidate.displacement, x, r, reach, near);
+                if (count == 0)
+                    continue;
+                for (int q = 0; q < kMeshSlots; ++q)
+                {
+                    particle.push_back(static_cast<std::uint32_t>(i));
+                    wall.push_back(static_cast<std::uint32_t>(w));
+                    if (triangleLists)
+                        meshTriangleStart.push_back(meshTriangleStart.back() +
+                                                    static_cast<std::uint32_t>(q == 0 ? count : 0));
+                }
+                if (triangleLists)
+                    meshTriangles.insert(meshTriangles.end(), near.begin(), near.end());
+            }
+            else if (!mesh && wallNear(candidate, x, r, reach))
+            {
+                particle.push_back(static_cast<std::uint32_t>(i));
+                wall.push_back(static_cast<std::uint32_t>(w));
+                if (triangleLists)
+                    meshTriangleStart.push_back(meshTriangleStart.back());
+            }
+        }
+        start.push_back(static_cast<std::uint32_t>(particle.size()));
+    }
+    const std::size_t count = particle.size();
+    if (normals)
+        meshNormal.resize(count, Vec3{});
+    history.spring.resize(count, Vec3{});
+    if (history.keepRolling)
+        history.rolling.resize(count, Vec3{});
+    if (history.keepFormed)
+        history.formed.resize(count, 0);
+    if (recordLoads)
+    {
+        loadForce.resize(count, Vec3{});
+        loadMoment.resize(count, Vec3{});
+    }
+}
+
 void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex,
                                       ContactHistoryStore& history)
 {

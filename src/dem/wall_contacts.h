@@ -78,6 +78,15 @@ class WallContactList
     /// under the new (particle, wall), sorted again; the rebuild() that must follow carries it.
     void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
 
+    /// Takes in the particles [from, particles.size()) appended between steps without a rebuild
+    /// (dem/particle_changes.h, addInsertedParticles): their candidates, with fresh history, go
+    /// at the end (the new particles have the highest indices, so the order is kept). They are
+    /// searched within `reach` [m] of the walls' current places: 1.5 skin, since until the next
+    /// rebuild a particle moves at most skin/2 from here and a wall up to skin from where it is
+    /// now (skin/2 either side of where it was at the last build). O(particles appended x walls).
+    void appendParticles(const ParticleStore& particles, std::size_t from, const std::vector<Wall>& walls,
+                         Real reach, ContactHistoryStore& history);
+
     /// The slot of the contact (particle, wall) (its entry in the wall history), e.g. to start a
     /// case in a loaded contact state after prepare(). Throws InputError if the particle is not
     /// near that wall.

@@ -106,6 +106,8 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
                                     world.neighbors.skin + world.neighbors.reach, world.neighbors.anyFixed,
                                     world.neighbors, world.pairHistory);
     }
+    else if (!world.periodicPairs.empty()) // inserted particles' pairs (particle_changes.h): now slots
+        world.periodicPairs.handOver(world.neighbors, world.pairHistory);
     world.neighbors.rebuild(world.particles, world.pairHistory);
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
 }

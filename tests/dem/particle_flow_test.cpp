@@ -1,11 +1,13 @@
 // Particles in and out (dem/particle_flow.h, dem/particle_changes.h) and frozen particles: the
 // radius distributions' moments, insertion counts and rates over a window, no overlaps, the same
 // particles on 1 and 2 threads, outlet counts and mass, history carried through a removal, a
-// frozen particle held in place and seen as a partner of infinite mass.
+// frozen particle held in place and seen as a partner of infinite mass. Insertion without a
+// rebuild of the contact lists: insertion_contacts_test.cpp.
 #include "dem/particle_changes.h"
 #include "dem/particle_flow.h"
 #include "dem/world.h"
 #include "exec/thread_pool.h"
+#include "flow_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +17,7 @@
 
 using namespace veridem;
 using namespace veridem::dem;
+using namespace veridem::dem::flow_test;
 
 namespace
 {
@@ -119,67 +122,6 @@ TEST(RadiusDistribution, TableByNumberMoments)
     expectMoments(sampleMoments(d, 200000, 9), mean, second - mean * mean);
 }
 
-namespace
-{
-
-Material glass()
-{
-    Material m;
-    m.name = "glass";
-    m.density = 2500;
-    m.normalStiffness = 500;
-    m.restitution = 0.5;
-    m.friction = 0.4;
-    return m;
-}
-
-/// An empty world with a floor and a skin for radii of 1-1.5 mm, prepared.
-World emptyBox()
-{
-    World world;
-    world.addMaterial(glass());
-    Wall floor;
-    floor.name = "floor";
-    floor.shape = PlaneShape{{0, 0, 0}, {0, 0, 1}};
-    world.walls.push_back(floor);
-    world.neighbors.skin = 0.3e-3;
-    prepare(world);
-    return world;
-}
-
-Inserter rain(Inserter::Mode mode, Real amount, Real from, Real until)
-{
-    Inserter in;
-    in.name = "rain";
-    in.region.kind = FlowRegion::Kind::Box;
-    in.region.min = {0, 0, 0};
-    in.region.max = {0.05, 0.05, 0.05};
-    in.mode = mode;
-    (mode == Inserter::Mode::Count ? in.count : in.rate) = amount;
-    in.from = from;
-    in.until = until;
-    in.radius.kind = RadiusDistribution::Kind::Uniform;
-    in.radius.min = 1e-3;
-    in.radius.max = 1.5e-3;
-    in.materials = {0};
-    in.materialCumulative = {1};
-    in.random = Random(11);
-    return in;
-}
-
-void expectNoOverlaps(const World& world)
-{
-    const ParticleStore& p = world.particles;
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        EXPECT_GE(p.position[i].z, p.radius[i]); // above the floor
-        for (std::size_t j = i + 1; j < p.size(); ++j)
-            ASSERT_GE(length(p.position[i] - p.position[j]), p.radius[i] + p.radius[j]) << i << " " << j;
-    }
-}
-
-} // namespace
-
 TEST(Insertion, RateOverAWindow)
 {
     World world = emptyBox();
@@ -242,13 +184,17 @@ namespace
 {
 
 /// 2,500 spheres inserted at once into a box with a floor and an outlet below a hole-free floor
-/// level, stepped 300 steps with a second insertion in the middle; on `threads` threads.
+/// level, stepped 300 steps with 20 more inserted at every event (every 50 steps, without a
+/// rebuild of the contact lists); on `threads` threads.
 World pour(int threads)
 {
     const exec::ThreadCountOverride loops(threads);
     World world = emptyBox();
     ParticleFlow flow;
     flow.inserters.push_back(rain(Inserter::Mode::Count, 2500, 0, 0));
+    Inserter more = rain(Inserter::Mode::Rate, 20000, 0, 1); // 20 an event (1 ms)
+    more.random = Random(12);
+    flow.inserters.push_back(more);
     Outlet o;
     o.region.kind = FlowRegion::Kind::Box;
     o.region.min = {0, 0, 0};

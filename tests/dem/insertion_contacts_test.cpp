@@ -1,0 +1,226 @@
+// Insertion without a rebuild of the contact lists (dem/particle_changes.h, addInsertedParticles):
+// the inserted particles' pairs and wall candidates are exactly those within the search distances,
+// the lists are not rebuilt, and an inserted particle's contact keeps the spring of the law
+// through a removal that renames it.
+#include "dem/particle_changes.h"
+#include "dem/particle_flow.h"
+#include "dem/world.h"
+#include "flow_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+using namespace veridem;
+using namespace veridem::dem;
+using namespace veridem::dem::flow_test;
+
+namespace
+{
+
+/// The glass of the two-sphere tests: kn 1000 N/m, a damping rate and friction 0.5.
+Material slidingGlass()
+{
+    Material m = glass();
+    m.normalStiffness = 1000;
+    m.normalDampingRate = 50;
+    m.friction = 0.5;
+    return m;
+}
+
+/// An inserter of one sphere (r = 1 mm) whose centre is x to 1e-10 m (a box of edge 2 r + 2e-10 m
+/// around it), moving at v, at t = 0.
+Inserter oneSphereAt(const Vec3& x, const Vec3& v)
+{
+    Inserter in;
+    in.name = "one";
+    in.region.kind = FlowRegion::Kind::Box;
+    const Real half = 1e-3 + 1e-10;
+    in.region.min = x - Vec3{half, half, half};
+    in.region.max = x + Vec3{half, half, half};
+    in.mode = Inserter::Mode::Count;
+    in.count = 1;
+    in.radius.kind = RadiusDistribution::Kind::Fixed;
+    in.radius.value = 1e-3;
+    in.materials = {0};
+    in.materialCumulative = {1};
+    in.velocity = v;
+    in.random = Random(3);
+    return in;
+}
+
+/// a and b agree to `relative` of `scale` in each component.
+void expectClose(const Vec3& a, const Vec3& b, Real scale, Real relative, const char* what, int s)
+{
+    EXPECT_NEAR(a.x, b.x, relative * scale) << what << " at step " << s;
+    EXPECT_NEAR(a.y, b.y, relative * scale) << what << " at step " << s;
+    EXPECT_NEAR(a.z, b.z, relative * scale) << what << " at step " << s;
+}
+
+} // namespace
+
+TEST(ParticleChanges, AnInsertedParticleKeepsItsSpringThroughARemovalWhileItSlides)
+{
+    // Sphere P is inserted next to sphere Q, touching nothing (gap 0.09 mm), moving towards it and
+    // sliding; a third sphere N, far from both, is removed by an outlet while P and Q slide on each
+    // other. Indices: N 0, Q 1, P 2 (inserted); after the removal P takes index 0, so the pair
+    // (1, 2) becomes (0, 1) with its order flipped: its spring is negated with it. The reference
+    // world holds only Q (0) and P (1) from the start, in the neighbour list: the same pair under
+    // the same law. The spring is what the law gives that pair, step by step.
+    //
+    // Tolerance: the inserted pair is evaluated through pairContactAt after the pair stage, the
+    // reference's in the pair kernel: the same law, with the flipped pair's separation and
+    // relative velocity negated exactly, so the two agree to rounding (~1e-16 relative a step);
+    // 1e-9 relative to the force's and spring's scale bounds its growth over the ~250 steps of
+    // contact (as the periodic tests, periodic_test.cpp).
+    const Real dt = 1e-6, skin = 2e-3;
+    const Vec3 xq{0.01, 0.01, 0.01}, xp = xq + Vec3{0.0004, 0, 0.00205}, vp{0.05, 0.02, -0.2};
+    World flowing;
+    flowing.addMaterial(slidingGlass());
+    flowing.gravity = {0, 0, 0};
+    flowing.neighbors.skin = skin;
+    flowing.particles.add({0.05, 0.05, 0.05}, {}, {}, 1e-3, 2500, 0); // N
+    flowing.particles.add(xq, {}, {}, 1e-3, 2500, 0);                 // Q
+    prepare(flowing);
+    ParticleFlow flow;
+    flow.nextId = 2; // (ids 0 and 1 are N's and Q's)
+    flow.inserters.push_back(oneSphereAt(xp, vp));
+    const std::size_t rebuildsBefore = flowing.neighbors.rebuildCount();
+    ASSERT_TRUE(flow.apply(flowing, dt));
+    ASSERT_EQ(flowing.particles.size(), 3u);
+    ASSERT_LT(length(flowing.particles.position[2] - xp), 1e-9); // P where meant
+    EXPECT_EQ(flowing.neighbors.rebuildCount(), rebuildsBefore); // inserted without a rebuild
+    ASSERT_EQ(flowing.periodicPairs.size(), 1u);                 // (Q, P), evaluated after the pair stage
+    EXPECT_EQ(flowing.periodicPairs.first[0], 1u);
+    EXPECT_EQ(flowing.periodicPairs.second[0], 2u);
+
+    World reference;
+    reference.addMaterial(slidingGlass());
+    reference.gravity = {0, 0, 0};
+    reference.neighbors.skin = skin;
+    reference.particles.add(xq, {}, {}, 1e-3, 2500, 0);
+    reference.particles.add(flowing.particles.position[2], flowing.particles.velocity[2], {}, 1e-3, 2500, 0);
+    prepare(reference);
+
+    Outlet outlet; // around N only
+    outlet.region.kind = FlowRegion::Kind::Box;
+    outlet.region.min = {0.04, 0.04, 0.04};
+    outlet.region.max = {0.06, 0.06, 0.06};
+    int touching = 0, touchingBeforeRemoval = 0;
+    bool removed = false;
+    Real largestSpring = 0;
+    for (int s = 1; s <= 900; ++s)
+    {
+        step(flowing, dt);
+        step(reference, dt);
+        const std::size_t p = removed ? 0 : 2, q = 1;
+        const bool inContact = reference.health.touchingPairs == 1;
+        ASSERT_EQ(flowing.health.touchingPairs, reference.health.touchingPairs) << s;
+        touching += inContact;
+        const Real scale = length(reference.particles.force[1]) + 1e-30;
+        expectClose(flowing.particles.force[p], reference.particles.force[1], scale, 1e-9, "force on P", s);
+        expectClose(flowing.particles.force[q], reference.particles.force[0], scale, 1e-9, "force on Q", s);
+        expectClose(flowing.particles.torque[p], reference.particles.torque[1], scale * 1e-3, 1e-9,
+                    "torque on P", s);
+        // The spring of (Q, P): the inserted pair's, or after the removal the candidate (P, Q)'s negated.
+        if (inContact)
+        {
+            ASSERT_EQ(reference.pairHistory.size(), 1u);
+            const Vec3 expected = reference.pairHistory.spring[0];
+            largestSpring = std::max(largestSpring, length(expected));
+            Vec3 spring;
+            if (!flowing.periodicPairs.empty())
+                spring = flowing.periodicPairs.history.spring[0];
+            else
+            {
+                ASSERT_EQ(flowing.pairHistory.size(), 1u) << s;
+                spring = -1.0 * flowing.pairHistory.spring[0];
+            }
+            expectClose(spring, expected, length(expected) + 1e-30, 1e-9, "spring", s);
+        }
+        // Remove N while P slides on Q (the 60th step of contact).
+        if (!removed && touching == 60)
+        {
+            touchingBeforeRemoval = touching;
+            ASSERT_NE(length(flowing.periodicPairs.history.spring[0]), 0); // loaded spring
+            flow.outlets.push_back(outlet);
+            flow.inserters.clear();
+            ASSERT_TRUE(flow.apply(flowing, dt));
+            ASSERT_EQ(flowing.particles.size(), 2u);
+            ASSERT_EQ(flowing.particles.id[0], 2u);     // P, moved into N's place
+            EXPECT_TRUE(flowing.periodicPairs.empty()); // the rebuild took the pair into the list
+            removed = true;
+        }
+    }
+    EXPECT_EQ(touchingBeforeRemoval, 60);
+    EXPECT_GT(touching, 120); // in contact well after the removal
+    EXPECT_GT(largestSpring, 0);
+}
+
+TEST(ParticleChanges, InsertionWithoutARebuildListsEveryPairAndWallWithinReach)
+{
+    // A bed poured and stepped (the particles move, the lists are rebuilt as they fall), then an
+    // insertion event: the contact lists are not rebuilt, and the inserted particles' pairs and
+    // wall candidates are exactly those within the search distances of particle_changes.h
+    // (1.5 skin beyond touching), found here by testing every pair and every wall.
+    World world = emptyBox();
+    ParticleFlow flow;
+    flow.inserters.push_back(rain(Inserter::Mode::Count, 2000, 0, 0));
+    const Real dt = 2e-5;
+    flow.apply(world, dt);
+    advance(world, dt, 1000); // 20 ms: a fall of 2 mm, many times skin/2
+    Inserter more = rain(Inserter::Mode::Count, 300, 0, 0);
+    more.random = Random(5);
+    flow.inserters = {more};
+    const std::size_t before = world.particles.size(), rebuilds = world.neighbors.rebuildCount();
+    const std::size_t pairsBefore = world.periodicPairs.size(), slotsBefore = world.wallContacts.size();
+    ASSERT_TRUE(flow.apply(world, dt));
+    const ParticleStore& p = world.particles;
+    ASSERT_EQ(p.size(), before + 300);
+    EXPECT_EQ(world.neighbors.rebuildCount(), rebuilds);
+    EXPECT_EQ(pairsBefore, 0u); // (the lists were rebuilt since the first insertion)
+    const Real search = 1.5 * world.neighbors.skin;
+    std::vector<std::uint64_t> expected, listed;
+    for (std::size_t i = before; i < p.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+        {
+            const Real within = p.radius[i] + p.radius[j] + search;
+            if (lengthSquared(p.position[i] - p.position[j]) < within * within)
+                expected.push_back((std::uint64_t(j) << 32) | i);
+        }
+    for (std::size_t k = 0; k < world.periodicPairs.size(); ++k)
+    {
+        EXPECT_EQ(length(world.periodicPairs.shift[k]), 0);
+        listed.push_back((std::uint64_t(world.periodicPairs.first[k]) << 32) | world.periodicPairs.second[k]);
+    }
+    ASSERT_FALSE(expected.empty());
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(listed, expected); // the same pairs, sorted by (i, j)
+    std::vector<std::uint64_t> walls, slots;
+    for (std::size_t i = before; i < p.size(); ++i)
+        for (std::size_t w = 0; w < world.walls.size(); ++w)
+            if (wallNear(world.walls[w], p.position[i], p.radius[i], search))
+                walls.push_back((std::uint64_t(i) << 32) | w);
+    for (std::size_t k = slotsBefore; k < world.wallContacts.size(); ++k)
+        slots.push_back((std::uint64_t(world.wallContacts.particle[k]) << 32) | world.wallContacts.wall[k]);
+    EXPECT_EQ(slots, walls);
+    ASSERT_EQ(world.wallContacts.start.size(), p.size() + 1);
+    EXPECT_EQ(world.wallContacts.start.back(), world.wallContacts.size());
+    for (std::size_t i = before; i < p.size(); ++i) // the new ones overlap nothing
+    {
+        EXPECT_GE(p.position[i].z, p.radius[i]);
+        for (std::size_t j = 0; j < p.size(); ++j)
+        {
+            if (j == i)
+                continue;
+            ASSERT_GE(length(p.position[i] - p.position[j]), p.radius[i] + p.radius[j]) << i << " " << j;
+        }
+    }
+    // The next steps run on the appended lists, and a rebuild takes the pairs into the neighbour list.
+    advance(world, dt, 200);
+    EXPECT_GT(world.neighbors.rebuildCount(), rebuilds);
+    EXPECT_TRUE(world.periodicPairs.empty());
+}
