@@ -2,7 +2,9 @@
 // order (WallContactList), through the contact law: in lanes a batch at a time (dem/exec/law_batch.h)
 // or one at a time through the general law, with the same bits. A wall contact's frame: the gap of
 // the wall's shape (wallGap, dem/walls/wall.h) and wallContactFrame (dem/contact_frame.h: the lever
-// arm, the contact-point velocity against the wall's surface velocity at the half step).
+// arm, the contact-point velocity against the wall's surface velocity at the half step). Passes:
+// planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap), any
+// walls in lanes (frames once per call), and the scalar path; the same bits from each.
 #include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 #include "dem/exec/law_batch.h"
