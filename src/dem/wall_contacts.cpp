@@ -80,11 +80,12 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     markActivity(walls);
 
     // Candidates per chunk of particles, concatenated in order (sorted by (particle, wall)).
-    // (A mesh candidate's slots: its triangles' count on the first, 0 on the others.)
+    // (A mesh candidate's slots: its triangles' count on the first, 0 on the others; a flat one's
+    // one slot: 1, its plane's triangle.)
     const int chunks = std::min(loopThreads(n), 64);
     std::vector<std::vector<std::uint32_t>> chunkParticle(static_cast<std::size_t>(chunks)),
         chunkWall(static_cast<std::size_t>(chunks)), chunkTriangleCount(static_cast<std::size_t>(chunks)),
-        chunkTriangles(static_cast<std::size_t>(chunks));
+        chunkTriangles(static_cast<std::size_t>(chunks)), chunkFlat(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
                    {
@@ -92,6 +93,7 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
                        auto& ws = chunkWall[static_cast<std::size_t>(c)];
                        auto& counts = chunkTriangleCount[static_cast<std::size_t>(c)];
                        auto& triangles = chunkTriangles[static_cast<std::size_t>(c)];
+                       auto& flat = chunkFlat[static_cast<std::size_t>(c)];
                        for (std::size_t i = begin; i < end; ++i)
                            for (std::size_t w = 0; w < walls.size(); ++w)
                            {
@@ -105,11 +107,23 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
                                                                               x, r, skin, triangles);
                                    if (near == 0)
                                        continue;
+                                   const std::size_t listed = triangles.size() - near;
+                                   if (meshPatchFlat(*mesh, candidate.displacement, x, r, skin,
+                                                     triangles.data() + listed, near))
+                                   {
+                                       triangles.resize(listed + 1);
+                                       ps.push_back(static_cast<std::uint32_t>(i));
+                                       ws.push_back(static_cast<std::uint32_t>(w));
+                                       counts.push_back(1);
+                                       flat.push_back(triangles[listed]);
+                                       continue;
+                                   }
                                    for (int q = 0; q < kMeshSlots; ++q)
                                    {
                                        ps.push_back(static_cast<std::uint32_t>(i));
                                        ws.push_back(static_cast<std::uint32_t>(w));
                                        counts.push_back(q == 0 ? static_cast<std::uint32_t>(near) : 0);
+                                       flat.push_back(kNotFlat);
                                    }
                                }
                                else if (!mesh && wallNear(candidate, x, r, skin))
@@ -117,11 +131,14 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
                                    ps.push_back(static_cast<std::uint32_t>(i));
                                    ws.push_back(static_cast<std::uint32_t>(w));
                                    if (anyMesh)
+                                   {
                                        counts.push_back(0);
+                                       flat.push_back(kNotFlat);
+                                   }
                                }
                            }
                    });
-    std::vector<std::uint32_t> newParticle, newWall, triangleStart, triangles;
+    std::vector<std::uint32_t> newParticle, newWall, triangleStart, triangles, newFlat;
     for (int c = 0; c < chunks; ++c)
     {
         const auto& ps = chunkParticle[static_cast<std::size_t>(c)];
@@ -134,6 +151,7 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
                                  chunkTriangleCount[std::size_t(c)].end());
             triangles.insert(triangles.end(), chunkTriangles[std::size_t(c)].begin(),
                              chunkTriangles[std::size_t(c)].end());
+            newFlat.insert(newFlat.end(), chunkFlat[std::size_t(c)].begin(), chunkFlat[std::size_t(c)].end());
         }
     }
     const std::size_t count = newParticle.size();
@@ -147,18 +165,46 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     meshTriangleStart.swap(triangleStart);
     meshTriangles.swap(triangles);
 
-    // Re-key the history: each slot's source is the old slot with the same (particle, wall) (the
-    // q-th slot of a mesh wall's group the old group's q-th).
+    // Re-key the history: each slot's source is the old slot with the same (particle, wall), a
+    // mesh group's slots in order, and across a flat/general change as the header says.
     std::vector<std::uint32_t> source(count, ContactHistoryStore::kNoSource);
     const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
+    const bool oldFlat = meshFlat.size() == particle.size() && meshNormal.size() == particle.size();
     std::size_t old = 0;
-    for (std::size_t k = 0; k < count; ++k)
+    for (std::size_t k = 0, next = 0; k < count; k = next)
     {
         const std::uint64_t wanted = key(newParticle[k], newWall[k]);
+        for (next = k + 1; next < count && key(newParticle[next], newWall[next]) == wanted;)
+            ++next;
         while (old < particle.size() && key(particle[old], wall[old]) < wanted)
             ++old;
-        if (old < particle.size() && key(particle[old], wall[old]) == wanted)
-            source[k] = static_cast<std::uint32_t>(old++);
+        std::size_t oldEnd = old;
+        while (oldEnd < particle.size() && key(particle[oldEnd], wall[oldEnd]) == wanted)
+            ++oldEnd;
+        const bool nowFlat = anyMesh && newFlat[k] != kNotFlat;
+        const bool wasFlat = oldFlat && old < oldEnd && meshFlat[old] != kNotFlat;
+        if (nowFlat && !wasFlat && oldEnd - old > 1 &&
+            meshNormal.size() == particle.size()) // general -> flat: the old slot of the plane's normal
+        {
+            const Wall& meshWall = walls[newWall[k]];
+            const MeshShape& shape = std::get<MeshShape>(meshWall.shape);
+            const TriangleMesh& m = *shape.mesh;
+            const Vec3 p = bodyPoint(shape, meshWall.displacement, particles.position[newParticle[k]]);
+            const Vec3& normal = m.normals[newFlat[k]];
+            const Vec3 towards =
+                dot(p - m.vertices[m.triangles[newFlat[k]][0]], normal) < 0 ? -normal : normal;
+            Real bestCos = 0.5; // (as the matching: within 60 degrees)
+            for (std::size_t o = old; o < oldEnd; ++o)
+                if (dot(meshNormal[o], towards) > bestCos)
+                {
+                    bestCos = dot(meshNormal[o], towards);
+                    source[k] = static_cast<std::uint32_t>(o);
+                }
+        }
+        else // the same kind (q-th to q-th), flat -> general (the first slot) or a plain wall
+            for (std::size_t q = 0; q < next - k && old + q < oldEnd; ++q)
+                source[k + q] = static_cast<std::uint32_t>(old + q);
+        old = oldEnd;
     }
     if (anyMesh)
     {
@@ -171,6 +217,7 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     }
     else
         meshNormal.clear();
+    meshFlat.swap(newFlat);
     if (history.size() != particle.size()) // (never built: no history to carry)
         history.clear();
     history.carry(source.data(), count);
@@ -233,8 +280,11 @@ void WallContactList::appendParticles(const ParticleStore& particles, std::size_
         start.push_back(static_cast<std::uint32_t>(particle.size()));
     }
     const std::size_t count = particle.size();
-    if (normals)
+    if (normals) // (an appended mesh candidate is general: kMeshSlots slots, none flat)
+    {
         meshNormal.resize(count, Vec3{});
+        meshFlat.resize(count, kNotFlat);
+    }
     history.spring.resize(count, Vec3{});
     if (history.keepRolling)
         history.rolling.resize(count, Vec3{});
@@ -279,6 +329,13 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
             normals[k] = meshNormal[kept[k].second];
         meshNormal.swap(normals);
     }
+    if (!meshFlat.empty())
+    {
+        std::vector<std::uint32_t> flat(kept.size());
+        for (std::size_t k = 0; k < kept.size(); ++k)
+            flat[k] = meshFlat[kept[k].second];
+        meshFlat.swap(flat);
+    }
     particle.swap(newParticle);
     wall.swap(newWall);
     history = std::move(renamed);
@@ -290,13 +347,27 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
 std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
                                             MeshGroup& group, Vec3* next) const
 {
+    const MeshShape& shape = std::get<MeshShape>(meshWall.shape);
+    for (int q = 0; q < kMeshSlots; ++q)
+    {
+        group.gap[q] = WallGap{};
+        group.fresh[q] = false;
+        next[q] = Vec3{};
+    }
+    if (meshFlat[k] != kNotFlat)
+    {
+        group.first = k;
+        group.size = 1;
+        group.gap[0] = flatSlotGap(k, shape, meshWall.displacement, x, r, next[0], group.fresh[0]);
+        return k;
+    }
     std::size_t first = k;
     while (first > 0 && k - first < kMeshSlots - 1 && particle[first - 1] == particle[k] &&
            wall[first - 1] == wall[k])
         --first;
     group.first = first;
+    group.size = kMeshSlots;
     MeshContact found[kMeshSlots];
-    const MeshShape& shape = std::get<MeshShape>(meshWall.shape);
     const int count = meshTriangleStart.size() == particle.size() + 1
                           ? meshContacts(shape, meshWall.displacement, x, r,
                                          meshTriangles.data() + meshTriangleStart[first],
@@ -304,12 +375,6 @@ std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall,
                           : meshContacts(shape, meshWall.displacement, x, r, found);
     const Vec3* stored = meshNormal.data() + first;
     bool taken[kMeshSlots] = {};
-    for (int q = 0; q < kMeshSlots; ++q)
-    {
-        group.gap[q] = WallGap{};
-        group.fresh[q] = false;
-        next[q] = Vec3{};
-    }
     for (int c = 0; c < count; ++c) // deepest first
     {
         int best = -1;
@@ -340,13 +405,13 @@ std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall,
 const WallGap& WallContactList::meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
                                             MeshGroup& group)
 {
-    if (group.first == ~std::size_t(0) || k < group.first || k >= group.first + kMeshSlots ||
+    if (group.first == ~std::size_t(0) || k < group.first || k >= group.first + group.size ||
         particle[group.first] != particle[k] || wall[group.first] != wall[k])
     {
         Vec3 next[kMeshSlots];
         const std::size_t first = matchMeshGroup(k, meshWall, x, r, group, next);
-        for (int q = 0; q < kMeshSlots; ++q)
-            meshNormal[first + std::size_t(q)] = next[q];
+        for (std::size_t q = 0; q < group.size; ++q)
+            meshNormal[first + q] = next[q];
     }
     return group.gap[k - group.first];
 }
@@ -373,7 +438,7 @@ std::size_t WallContactList::memoryBytes() const
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(particle) + bytes(wall) + bytes(start) + bytes(wallDisplacementAtBuild_) +
            bytes(wallActiveAtBuild_) + bytes(loadForce) + bytes(loadMoment) + bytes(meshNormal) +
-           bytes(wallTurnAtBuild_) + bytes(meshTriangleStart) + bytes(meshTriangles);
+           bytes(wallTurnAtBuild_) + bytes(meshTriangleStart) + bytes(meshTriangles) + bytes(meshFlat);
 }
 
 } // namespace veridem::dem

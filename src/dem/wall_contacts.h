@@ -16,6 +16,29 @@
 // tangential and rolling history while its feature changes from face to edge to the next face as
 // the ball rolls on. A rebuild carries the slots of a continuing (particle, wall) in order.
 //
+// Flat candidates. A (particle, mesh wall) candidate whose triangles within r + skin of the centre
+// x at the build (meshTrianglesNear) form a flat patch (meshPatchFlat: coplanar to round-off, and
+// every edge that comes within r + skin of x interior, with two listed users on opposite sides)
+// takes ONE slot, evaluated as the two-sided plane of one of its triangles (meshFlat). Why that is
+// the same contact: let D be the disc plane x ball(x, r + skin) and U the union of the listed
+// triangles. U holds the closest point q of some listed triangle, inside D. For any y in D the
+// segment q-y lies in D (convex); were it to leave U, it would cross U's boundary at a point of D,
+// on an edge (or at a vertex, whose edges all are in D) of a listed triangle; but such an edge has
+// triangles on both sides (and around a vertex the fan closes), so that point is inside U: hence
+// D lies in U. Until the next rebuild the sphere moves by d, |d| < skin, relative to the mesh
+// (needsRebuild, and the pair list's skin/2 per particle), and only listed triangles can touch it.
+// If it touches (centre height h' < r above the plane), its centre's projection is at squared
+// distance |d_t|^2 + (h' + |d_n|)^2 <= (r + |d|)^2 < (r + skin)^2 from x (d_t, d_n: d's parts
+// along and across the plane), so it lies in D, inside U: the closest point of the surface is that
+// projection, a face contact, and meshContacts would find this one contact (the face's, to
+// round-off of which coplanar triangle computes it; the edge and vertex contacts fail their
+// Voronoi test). A candidate that is not flat (an edge, a corner, a border, a curved surface)
+// keeps kMeshSlots slots and the general matching. Mesh groups therefore hold 1 or kMeshSlots
+// slots. History follows the contact across a change at a rebuild: a general group becoming flat
+// gives its flat slot the history and normal of the old slot whose normal is within 60 degrees of
+// the plane's normal towards the centre (the closest), and a flat slot becoming general gives its
+// history and normal to the new group's first slot (the matching then keeps it).
+//
 // A dense (particle x wall) history would cost 24-48 bytes per particle per wall and test every
 // wall for every particle each step; a bed in a box has 5 walls and 1 in 5 particles near one.
 #pragma once
@@ -47,13 +70,41 @@ class WallContactList
     // renaming until the next rebuild (the query then falls back to the mesh's grid: the same
     // contacts).
     std::vector<std::uint32_t> meshTriangleStart, meshTriangles;
+    // Per slot, the triangle whose plane is a flat candidate's contact surface (its only slot), or
+    // kNotFlat (every other slot). Empty unless some wall is a mesh; saved in checkpoints.
+    static constexpr std::uint32_t kNotFlat = 0xffffffffu;
+    std::vector<std::uint32_t> meshFlat;
+    /// The flat slot k's contact with the sphere (x, r [m]): trianglePlaneContact of meshFlat[k];
+    /// `next` is set to its signed body normal (zero if not touching: the slot's new meshNormal,
+    /// which `next` may be) and `fresh` if the stored normal was not within 60 degrees of it (a
+    /// new contact, as in the matching: its history must be forgotten).
+    VERIDEM_HOT_INLINE WallGap flatSlotGap(std::size_t k, const MeshShape& shape, const Vec3& offset,
+                                           const Vec3& x, Real r, Vec3& next, bool& fresh) const
+    {
+        WallGap gap;
+        Vec3 bodyNormal;
+        const Vec3 stored = meshNormal[k];
+        fresh = false;
+        if (!trianglePlaneContact(*shape.mesh, meshFlat[k], bodyPoint(shape, offset, x), r, gap.overlap,
+                                  bodyNormal))
+        {
+            next = Vec3{};
+            return gap;
+        }
+        fresh = lengthSquared(stored) > 0 && !(dot(stored, bodyNormal) > 0.5);
+        next = bodyNormal;
+        gap.touching = true;
+        gap.normal = worldDirection(shape, bodyNormal);
+        gap.effectiveRadius = r;
+        return gap;
+    }
 
     /// The contacts of one (particle, mesh wall) candidate matched to its slots, for a loop over
     /// slots: `first` is the group's first slot; `fresh` marks a slot taken over by a new contact
     /// (its history must be forgotten before use).
     struct MeshGroup
     {
-        std::size_t first = ~std::size_t(0);
+        std::size_t first = ~std::size_t(0), size = 0; // size: 1 (flat) or kMeshSlots
         WallGap gap[kMeshSlots];
         bool fresh[kMeshSlots] = {};
     };
@@ -83,7 +134,8 @@ class WallContactList
     /// at the end (the new particles have the highest indices, so the order is kept). They are
     /// searched within `reach` [m] of the walls' current places: 1.5 skin, since until the next
     /// rebuild a particle moves at most skin/2 from here and a wall up to skin from where it is
-    /// now (skin/2 either side of where it was at the last build). O(particles appended x walls).
+    /// now (skin/2 either side of where it was at the last build). An appended mesh candidate takes
+    /// kMeshSlots general slots (the next rebuild may find it flat). O(particles appended x walls).
     void appendParticles(const ParticleStore& particles, std::size_t from, const std::vector<Wall>& walls,
                          Real reach, ContactHistoryStore& history);
 
@@ -113,8 +165,8 @@ class WallContactList
     std::vector<std::uint8_t> wallActiveAtBuild_;
     std::vector<Real> wallTurnAtBuild_; // mesh walls' accumulated rotation [rad]; empty without meshes
     /// Matches the contacts of the (particle, mesh wall) group holding slot k to its slots against
-    /// the stored normals: fills `group` and the slots' new normals `next` (kMeshSlots); returns
-    /// the group's first slot.
+    /// the stored normals: fills `group` and the slots' new normals `next` (group.size); returns
+    /// the group's first slot. A flat group's one contact is its plane's (flatSlotGap).
     std::size_t matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group,
                                Vec3* next) const;
 };

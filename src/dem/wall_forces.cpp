@@ -2,7 +2,9 @@
 // order (WallContactList), through the contact law: in lanes a batch at a time (dem/exec/law_batch.h)
 // or one at a time through the general law, with the same bits. A wall contact's frame: the gap of
 // the wall's shape (wallGap, dem/walls/wall.h) and wallContactFrame (dem/contact_frame.h: the lever
-// arm, the contact-point velocity against the wall's surface velocity at the half step).
+// arm, the contact-point velocity against the wall's surface velocity at the half step). Passes:
+// planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap), any
+// walls in lanes (frames once per call), and the scalar path; the same bits from each.
 #include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 #include "dem/exec/law_batch.h"
@@ -11,6 +13,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 namespace veridem::dem
 {
@@ -51,21 +54,21 @@ VERIDEM_HOT_INLINE WallGap slotGap(WallContactList& list, std::size_t k, const W
     return gap;
 }
 
-/// The contact input of particle i touching `wall` (gap from wallGap), as the contact law takes
-/// it; `arm` is set to the lever arm from the centre to the contact point [m].
-VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const Wall& wall, const WallGap& gap,
-                                                 Real dt, Vec3& arm)
+/// The contact input of particle i touching a wall moving with `motion` at the half step
+/// (surfaceMotion(wall, -dt/2); gap from wallGap), as the contact law takes it; `arm` is set to
+/// the lever arm from the centre to the contact point [m].
+VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const SurfaceMotion& motion,
+                                                 const WallGap& gap, Real dt, Vec3& arm)
 {
-    const ContactFrameOf<Real> frame =
-        wallContactFrame(gap.normal, gap.overlap, s.position, s.velocity, s.angularVelocity, s.radius,
-                         surfaceMotion(wall, -0.5 * dt), 0.5 * dt);
+    const ContactFrameOf<Real> frame = wallContactFrame(gap.normal, gap.overlap, s.position, s.velocity,
+                                                        s.angularVelocity, s.radius, motion, 0.5 * dt);
     arm = wallArm(s.radius, gap.normal);
     ContactInput in;
     in.normal = gap.normal;
     in.overlap = gap.overlap;
     in.relativeVelocity = frame.relativeVelocity;
     in.angularVelocity = s.angularVelocity;
-    in.relativeAngularVelocity = s.angularVelocity - wall.motion.angularVelocity;
+    in.relativeAngularVelocity = s.angularVelocity - motion.angularVelocity;
     in.effectiveMass = s.mass;
     in.effectiveRadius = gap.effectiveRadius;
     in.spinInertia = 1.0 / s.invInertia;
@@ -106,9 +109,22 @@ void addWallContact(ParticleStore& p, std::uint32_t i, const Vec3& force, const 
     foldWallOverlap(i, overlap, p.radius[i], health);
 }
 
+/// A wall as the general lane pass reads it, made once per call: its motion at the half step
+/// (surfaceMotion at -dt/2, as wallContactInput takes it), and for a plane its geometry
+/// (planeGeometry; not `active`: no contact, as wallGap), for a mesh its shape. The same values as
+/// made per contact, so the same bits.
+struct WallFrame
+{
+    SurfaceMotion motion;
+    const MeshShape* mesh;
+    bool isPlane, active;
+    PlaneGeometry plane;
+};
+
 /// computeWallForces when every contact takes the lane law: the inputs are computed per contact
 /// (wallContactInput), the law runs in lanes a batch at a time, and the results are added in
-/// slot order, so the sums and bits are those of the scalar path.
+/// slot order, so the sums and bits are those of the scalar path. A flat mesh slot goes straight
+/// to its plane (WallContactList::flatSlotGap), without the group matching.
 ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::size_t end)
 {
     ParticleStore& p = world.particles;
@@ -120,6 +136,14 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     const UniformLaw* const uniform = single ? &*single : nullptr;
     std::optional<WallContactList::MeshGroup> group; // (made on the first mesh slot only)
     const WallLaw kernel = exec::isAvx2() ? wallLawAvx2 : wallLawPortable;
+    std::vector<WallFrame> frames(world.walls.size());
+    for (std::size_t w = 0; w < frames.size(); ++w)
+    {
+        const Wall& wall = world.walls[w];
+        const PlaneShape* plane = std::get_if<PlaneShape>(&wall.shape);
+        frames[w] = {surfaceMotion(wall, -0.5 * dt), std::get_if<MeshShape>(&wall.shape), plane != nullptr,
+                     wallActive(wall), plane ? planeGeometry(*plane, wall.displacement) : PlaneGeometry{}};
+    }
     LawBatch b;
     std::size_t m = 0;
     const auto run = [&]
@@ -145,16 +169,30 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
     {
         const std::uint32_t i = list.particle[k];
-        const Wall& wall = world.walls[list.wall[k]];
-        const WallGap gap = slotGap(list, k, wall, p.position[i], p.radius[i], group, history);
+        const std::uint32_t w = list.wall[k];
+        const WallFrame& frame = frames[w];
+        WallGap gap;
+        if (frame.isPlane)
+            gap = frame.active ? wallGap(frame.plane, p.position[i], p.radius[i]) : WallGap{};
+        else if (frame.mesh && list.meshFlat[k] != WallContactList::kNotFlat)
+        {
+            bool fresh;
+            gap = list.flatSlotGap(k, *frame.mesh, world.walls[w].displacement, p.position[i], p.radius[i],
+                                   list.meshNormal[k], fresh);
+            if (fresh)
+                history.forget(k);
+        }
+        else
+            gap = slotGap(list, k, world.walls[w], p.position[i], p.radius[i], group, history);
         if (!gap.touching)
         {
             history.forget(k);
             continue;
         }
         ++health.touching;
+        const Wall& wall = world.walls[w];
         Vec3 arm;
-        ContactInput in = wallContactInput(particleState(p, i), wall, gap, dt, arm);
+        ContactInput in = wallContactInput(particleState(p, i), frame.motion, gap, dt, arm);
         b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass, history.spring[k]);
         if (!uniform)
             addContactLaw(b, m, world.pairs(p.material[i], wall.material));
@@ -171,30 +209,36 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     return health;
 }
 
-/// A plane wall as the plane-wall pass reads it: its geometry (planeGeometry) and its motion at the
-/// half step (surfaceMotion at -dt/2, as wallContactInput), made once per step.
+/// A wall as the plane-wall pass reads it: a plane's geometry (planeGeometry) or a mesh's shape
+/// (`mesh`, else null), and its motion at the half step (surfaceMotion at -dt/2, as
+/// wallContactInput), made once per step.
 struct PlaneFrame
 {
     PlaneGeometry geometry;
     SurfaceMotion motion;
     std::uint32_t material;
+    const MeshShape* mesh;
 };
 
 constexpr std::size_t kMaxPlaneFrames = 16; // more walls than this take the general pass
 
-/// The frames of `walls` at the half step; false if some wall is not a plane or there are more
-/// than kMaxPlaneFrames.
-bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
+/// The frames of `walls` at the half step; false if some wall is neither a plane nor a mesh or
+/// there are more than kMaxPlaneFrames. `meshes`: whether some wall is a mesh.
+bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames, bool& meshes)
 {
+    meshes = false;
     if (walls.size() > kMaxPlaneFrames)
         return false;
     for (std::size_t w = 0; w < walls.size(); ++w)
     {
         const Wall& wall = walls[w];
         const PlaneShape* plane = std::get_if<PlaneShape>(&wall.shape);
-        if (!plane)
+        const MeshShape* mesh = std::get_if<MeshShape>(&wall.shape);
+        if (!plane && !mesh)
             return false;
-        frames[w] = {planeGeometry(*plane, wall.displacement), surfaceMotion(wall, -0.5 * dt), wall.material};
+        meshes = meshes || mesh;
+        frames[w] = {plane ? planeGeometry(*plane, wall.displacement) : PlaneGeometry{},
+                     surfaceMotion(wall, -0.5 * dt), wall.material, mesh};
     }
     return true;
 }
@@ -222,11 +266,33 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames)
     }
 }
 
+/// The gap of mesh slot k in the plane-wall pass, as wallForcesInLanes takes it: a flat slot's
+/// plane (forgetting a replaced contact's history), else the contact matched to the slot.
+VERIDEM_HOT_INLINE WallGap meshSlotGapInPass(World& world, std::size_t k, const MeshShape& shape,
+                                             const Vec3& x, Real r,
+                                             std::optional<WallContactList::MeshGroup>& group)
+{
+    WallContactList& list = world.wallContacts;
+    if (list.meshFlat[k] != WallContactList::kNotFlat)
+    {
+        bool fresh;
+        const WallGap gap = list.flatSlotGap(k, shape, world.walls[list.wall[k]].displacement, x, r,
+                                             list.meshNormal[k], fresh);
+        if (fresh)
+            world.wallHistory.forget(k);
+        return gap;
+    }
+    return slotGap(list, k, world.walls[list.wall[k]], x, r, group, world.wallHistory);
+}
+
 /// wallForcesInLanes for plane walls (frames from planeFrames): the same gap (wallGap of the plane's
 /// geometry) and contact frame (wallContactFrame) with the wall's part made once per step, so the
-/// same operations on the same values and the same bits. Inlined into an instruction-set variant below
-/// (three-operand AVX encodings of the same scalar operations for the AVX2 one).
-template <class Lanes>
+/// same operations on the same values and the same bits. With kMeshes, some walls are meshes: a
+/// flat slot's gap is its plane's (WallContactList::flatSlotGap), another mesh slot's the matched
+/// contact (slotGap); a mesh contact's frame is a plane's (R* = r, arm -r n). Inlined into an
+/// instruction-set variant below (three-operand AVX encodings of the same scalar operations for
+/// the AVX2 one).
+template <class Lanes, bool kMeshes>
 VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std::size_t begin,
                                                      std::size_t end, const PlaneFrame* frames)
 {
@@ -250,6 +316,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     const bool rolling = history.keepRolling;
     const bool loads = list.recordLoads;
     const Real halfStep = 0.5 * dt;
+    std::optional<WallContactList::MeshGroup> group; // (kMeshes: made on the first general mesh slot)
     LawBatch b;
     std::size_t m = 0;
     // (Inlined: a lambda's own function would not have the caller's instruction set.)
@@ -294,7 +361,12 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         const PlaneFrame& frame = frames[wallOf[k]];
         const Vec3 x = position[i];
         const Real r = radius[i];
-        const WallGap gap = wallGap(frame.geometry, x, r);
+        WallGap gap;
+        if constexpr (kMeshes)
+            gap = frame.mesh ? meshSlotGapInPass(world, k, *frame.mesh, x, r, group)
+                             : wallGap(frame.geometry, x, r);
+        else
+            gap = wallGap(frame.geometry, x, r);
         if (!gap.touching)
         {
             spring[k] = Vec3{};
@@ -319,13 +391,25 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
 VERIDEM_AVX2_TARGET ContactHealth planeWallForcesAvx2(World& world, Real dt, std::size_t begin,
                                                       std::size_t end, const PlaneFrame* frames)
 {
-    return planeWallForcesBody<Lanes4>(world, dt, begin, end, frames);
+    return planeWallForcesBody<Lanes4, false>(world, dt, begin, end, frames);
 }
 
 ContactHealth planeWallForcesPortable(World& world, Real dt, std::size_t begin, std::size_t end,
                                       const PlaneFrame* frames)
 {
-    return planeWallForcesBody<Lanes2>(world, dt, begin, end, frames);
+    return planeWallForcesBody<Lanes2, false>(world, dt, begin, end, frames);
+}
+
+VERIDEM_AVX2_TARGET ContactHealth planeMeshWallForcesAvx2(World& world, Real dt, std::size_t begin,
+                                                          std::size_t end, const PlaneFrame* frames)
+{
+    return planeWallForcesBody<Lanes4, true>(world, dt, begin, end, frames);
+}
+
+ContactHealth planeMeshWallForcesPortable(World& world, Real dt, std::size_t begin, std::size_t end,
+                                          const PlaneFrame* frames)
+{
+    return planeWallForcesBody<Lanes2, true>(world, dt, begin, end, frames);
 }
 
 /// Wall contact k of the particle whose state is `s`, through the general contact law (any
@@ -348,7 +432,7 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
     ++health.touching;
     const PairParams& params = world.pairs(s.material, wall.material);
     Vec3 arm;
-    ContactInput in = wallContactInput(s, wall, gap, dt, arm);
+    ContactInput in = wallContactInput(s, surfaceMotion(wall, -0.5 * dt), gap, dt, arm);
     if (params.rollingModel == RollingModel::Epsd)
         in.rollingInertia = wallRollingInertia(in.spinInertia, s.mass, s.radius);
 
@@ -377,8 +461,12 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
     if (world.exec.batchedContactKernel)
     {
         PlaneFrame frames[kMaxPlaneFrames];
-        if (!planeFrames(world.walls, dt, frames))
+        bool meshes;
+        if (!planeFrames(world.walls, dt, frames, meshes))
             return wallForcesInLanes(world, dt, begin, end);
+        if (meshes)
+            return exec::isAvx2() ? planeMeshWallForcesAvx2(world, dt, begin, end, frames)
+                                  : planeMeshWallForcesPortable(world, dt, begin, end, frames);
         return exec::isAvx2() ? planeWallForcesAvx2(world, dt, begin, end, frames)
                               : planeWallForcesPortable(world, dt, begin, end, frames);
     }

@@ -26,10 +26,11 @@
 namespace veridem::io
 {
 
-inline constexpr std::uint32_t kCheckpointVersion = 5; // 2: the 3D energy ledger records (enLg, enSt); 3: its
+inline constexpr std::uint32_t kCheckpointVersion = 6; // 2: the 3D energy ledger records (enLg, enSt); 3: its
                                                        // adhesion dissipation; 4: particle ids and frozen
                                                        // flags, inserter and outlet state (pId, pFix, fl*);
-                                                       // 5: the periodic pairs and their history (pb*)
+                                                       // 5: the periodic pairs and their history (pb*);
+                                                       // 6: the flat mesh slots' triangles (wcMF)
 
 enum class CheckpointEngine : std::uint32_t
 {

@@ -81,11 +81,13 @@ struct CheckpointAccess
         out.array("wcDB", w.wallDisplacementAtBuild_);
         out.array("wcMN", w.meshNormal);
         out.array("wcTB", w.wallTurnAtBuild_);
+        out.array("wcMF", w.meshFlat);
     }
 
     static void read(io::CheckpointReader& in, WallContactList& w, ContactHistoryStore& h,
-                     std::size_t particles, std::size_t walls)
+                     std::size_t particles, const std::vector<Wall>& wallList)
     {
+        const std::size_t walls = wallList.size();
         h.keepRolling = in.value<std::uint8_t>("wcRh") != 0;
         in.array("wcPa", w.particle);
         in.array("wcWa", w.wall);
@@ -95,9 +97,11 @@ struct CheckpointAccess
         in.array("wcDB", w.wallDisplacementAtBuild_);
         in.array("wcMN", w.meshNormal);
         in.array("wcTB", w.wallTurnAtBuild_);
+        in.array("wcMF", w.meshFlat);
         // The mesh candidates' triangle lists are not saved: those of the scene's own first build
         // do not belong to these slots, so the step falls back to the mesh grid (the same
-        // contacts) until the next rebuild makes them again.
+        // contacts) until the next rebuild makes them again. A flat slot needs only its plane's
+        // triangle (meshFlat, saved).
         w.meshTriangleStart.clear();
         w.meshTriangles.clear();
         const std::size_t slots = w.particle.size();
@@ -106,8 +110,15 @@ struct CheckpointAccess
                   (h.rolling.empty() || h.rolling.size() == slots) && w.start.size() == particles + 1 &&
                   w.wallDisplacementAtBuild_.size() <= walls &&
                   (w.meshNormal.empty() || w.meshNormal.size() == slots) &&
-                  (w.wallTurnAtBuild_.empty() || w.wallTurnAtBuild_.size() == walls);
+                  (w.wallTurnAtBuild_.empty() || w.wallTurnAtBuild_.size() == walls) &&
+                  w.meshFlat.size() == w.meshNormal.size();
         ok = ok && below(w.particle, particles) && below(w.wall, walls) && offsets(w.start, slots);
+        for (std::size_t k = 0; ok && k < w.meshFlat.size(); ++k) // (a flat slot's triangle is its mesh's)
+            if (w.meshFlat[k] != WallContactList::kNotFlat)
+            {
+                const auto* mesh = std::get_if<MeshShape>(&wallList[w.wall[k]].shape);
+                ok = mesh && w.meshFlat[k] < mesh->mesh->triangles.size();
+            }
         if (!ok)
             in.fail("is corrupt: the wall-contact list does not fit the scene");
     }
@@ -440,7 +451,7 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
 
     dem::CheckpointAccess::read(in, world.neighbors, world.pairHistory, n);
     readPeriodicPairs(in, world.periodicPairs, world.pairHistory.keepRolling, n);
-    dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, walls);
+    dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, world.walls);
     world.wallContacts.markActivity(world.walls); // (not saved: the walls' clocks give it)
     const bool hasLedger = in.value<std::uint8_t>("enLg") != 0;
     if (hasLedger != (ledger != nullptr))

@@ -13,8 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -296,6 +298,72 @@ TEST(Determinism, PlaneWallPassMatchesScalarPathOnAMovingDisk)
         EXPECT_EQ(batched.health.maxOverlapRatio, scalar.health.maxOverlapRatio) << variant;
     }
     ASSERT_TRUE(exec::selectIsa(initial));
+}
+
+/// The jostling box (10^3) on a meshed floor instead of the plane: a shallow valley along y (two
+/// planes of slope 0.005 meeting at x = box/2, two triangles per 1 mm cell): candidates away from
+/// the valley's line are flat (one slot, mesh wall's plane path), those near it are general
+/// (kMeshSlots slots, the matching), and balls cross between the two as they jostle.
+World jostlingBoxOnAMeshValley(bool batched)
+{
+    World world = jostlingBox(true, 10);
+    const Real box = 10 * 2.05e-3, cell = 1e-3, slope = 0.005;
+    const int cells = static_cast<int>(box / cell) + 3;
+    const auto at = [&](int i, int j)
+    {
+        const Real x = -cell + i * cell;
+        return Vec3{x, -cell + j * cell, slope * std::fabs(x - 0.5 * box) - slope * 0.5 * box};
+    };
+    std::vector<Vec3> corners;
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i)
+            corners.insert(corners.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
+                                           at(i + 1, j + 1), at(i, j + 1)});
+    MeshReport report; // (an open boundary: expected for a floor)
+    MeshShape shape;
+    shape.mesh = std::make_shared<const TriangleMesh>(buildTriangleMesh(corners, "valley", report));
+    shape.farthestVertex = shape.mesh->farthestVertex(shape.pivot);
+    world.walls.back().shape = std::move(shape);
+    world.exec.batchedContactKernel = batched;
+    return world;
+}
+
+TEST(Determinism, AMeshFloorWithFlatAndGeneralCandidatesGivesTheSameBitsOnAnyThreadsAndPath)
+{
+    const auto run = [](int threads, bool batched)
+    {
+        const exec::ThreadCountOverride loops(threads);
+        World world = jostlingBoxOnAMeshValley(batched);
+        for (int s = 0; s < 500; ++s)
+            step(world, 1e-5);
+        return world;
+    };
+    const World one = run(1, true);
+    std::size_t flat = 0, general = 0;
+    for (std::size_t k = 0; k < one.wallContacts.size(); ++k)
+        if (one.wallContacts.wall[k] == one.walls.size() - 1)
+            ++(one.wallContacts.meshFlat[k] != WallContactList::kNotFlat ? flat : general);
+    EXPECT_GT(flat, 0u);
+    EXPECT_GT(general, 0u);
+    EXPECT_GT(one.health.touchingWalls, 0u);
+    const std::string initial = exec::isaName();
+    std::vector<World> others;
+    others.push_back(run(2, true));
+    others.push_back(run(3, true));
+    others.push_back(run(1, false));
+    if (exec::selectIsa("portable"))
+        others.push_back(run(2, true));
+    ASSERT_TRUE(exec::selectIsa(initial));
+    for (const World& other : others)
+    {
+        EXPECT_TRUE(sameBits(one.particles.position, other.particles.position));
+        EXPECT_TRUE(sameBits(one.particles.velocity, other.particles.velocity));
+        EXPECT_TRUE(sameBits(one.particles.angularVelocity, other.particles.angularVelocity));
+        EXPECT_TRUE(sameBits(one.wallHistory.spring, other.wallHistory.spring));
+        EXPECT_TRUE(sameBits(one.wallContacts.meshNormal, other.wallContacts.meshNormal));
+        EXPECT_EQ(one.health.touchingWalls, other.health.touchingWalls);
+        EXPECT_EQ(one.health.maxOverlapRatio, other.health.maxOverlapRatio);
+    }
 }
 
 /// Random particle state for the integration loops: n particles with velocities, spins, forces

@@ -147,7 +147,7 @@ refused(other, f"{out}/k337_split12.bin", "belongs to another scene", "other sce
 refused(scene2d, f"{out}/k337_split12.bin", "is a checkpoint of a 3D DEM scene", "other engine")
 with open(f"{out}/version.bin", "wb") as f:
     f.write(good[:12] + struct.pack("<I", 99) + good[16:])
-refused(scene3d, f"{out}/version.bin", "has format version 99, this veridem reads version 5", "version")
+refused(scene3d, f"{out}/version.bin", "has format version 99, this veridem reads version 6", "version")
 with open(f"{out}/truncated.bin", "wb") as f:
     f.write(good[:len(good) // 2])
 refused(scene3d, f"{out}/truncated.bin", "is truncated", "truncated")

@@ -136,11 +136,11 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
         Found f;
         if (cp.feature == MeshFeature::Face)
         {
-            const Real s = dot(p - a, m.normals[t]);
-            const Real d = std::fabs(s);
-            if (!(d < r))
+            Real overlap;
+            Vec3 normal;
+            if (!trianglePlaneContact(m, t, p, r, overlap, normal))
                 continue;
-            f = {FaceRank, t, r - d, s < 0 ? -m.normals[t] : m.normals[t]};
+            f = {FaceRank, t, overlap, normal};
         }
         else
         {
@@ -249,6 +249,43 @@ std::size_t meshTrianglesNear(const MeshShape& shape, const Vec3& offset, const 
         }
     }
     return added;
+}
+
+bool meshPatchFlat(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach,
+                   const std::uint32_t* near, std::size_t nearCount)
+{
+    if (nearCount == 0)
+        return false;
+    const TriangleMesh& m = *shape.mesh;
+    const Vec3 p = bodyPoint(shape, offset, x);
+    const Vec3& normal = m.normals[near[0]];
+    const Vec3& origin = m.vertices[m.triangles[near[0]][0]];
+    const Real slack = kFlatSlack * m.size, limit = r + reach;
+    const auto listed = [&](std::uint32_t t) { return std::binary_search(near, near + nearCount, t); };
+    for (std::size_t n = 0; n < nearCount; ++n)
+    {
+        const std::uint32_t t = near[n];
+        for (int e = 0; e < 3; ++e)
+            if (!(std::fabs(dot(m.vertices[m.triangles[t][e]] - origin, normal)) <= slack))
+                return false;
+        for (int e = 0; e < 3; ++e)
+        {
+            const Vec3& a = m.vertices[m.triangles[t][e]];
+            const Vec3& b = m.vertices[m.triangles[t][(e + 1) % 3]];
+            const Vec3 ab = b - a;
+            const Real along = std::clamp(dot(p - a, ab) / dot(ab, ab), Real(0), Real(1));
+            if (!(lengthSquared(p - (a + along * ab)) < limit * limit))
+                continue; // (an edge beyond r + reach: the disc does not reach it)
+            const std::uint32_t g = m.triangleEdges[t][e];
+            if (m.edgeStart[g + 1] - m.edgeStart[g] != 2)
+                return false;
+            const std::uint32_t u0 = m.edgeUsers[m.edgeStart[g]], u1 = m.edgeUsers[m.edgeStart[g] + 1];
+            if (!listed(u0 / 3) || !listed(u1 / 3) ||
+                !(dot(m.inward[u0 / 3][u0 % 3], m.inward[u1 / 3][u1 % 3]) < 0))
+                return false;
+        }
+    }
+    return true;
 }
 
 bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach)

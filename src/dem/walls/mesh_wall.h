@@ -23,10 +23,12 @@
 // on a face), the overlap r - distance, and R* = r (the wall is taken as flat at the contact).
 #pragma once
 
+#include "core/hot.h"
 #include "core/vec3.h"
 #include "dem/walls/triangle_mesh.h"
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -72,6 +74,23 @@ struct MeshContact
     Vec3 bodyNormal; // the same in the body frame
 };
 
+/// The contact of the body-frame point p (a sphere's centre, radius r [m]) with the plane of
+/// triangle t, from either side: the signed distance s = (p - a).n from its first corner a along
+/// its normal n gives the overlap r - |s| [m] and the body-frame normal sign(s) n (n if s = 0).
+/// False if |s| >= r. A face contact of meshContacts, and the whole contact of a flat candidate
+/// (meshPatchFlat).
+VERIDEM_HOT_INLINE bool trianglePlaneContact(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r,
+                                             Real& overlap, Vec3& bodyNormal)
+{
+    const Real s = dot(p - m.vertices[m.triangles[t][0]], m.normals[t]);
+    const Real d = std::fabs(s);
+    if (!(d < r))
+        return false;
+    overlap = r - d;
+    bodyNormal = s < 0 ? -m.normals[t] : m.normals[t];
+    return true;
+}
+
 /// The contacts of a sphere (centre x, radius r [m]) with the mesh after contact elimination
 /// (header comment), deepest first, at most kMeshSlots; returns their number. Looks the
 /// triangles near the sphere up in the mesh's grid.
@@ -91,6 +110,23 @@ WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real 
 /// Returns how many were appended.
 std::size_t meshTrianglesNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach,
                               std::vector<std::uint32_t>& out);
+
+/// True if the triangles near[0, nearCount) (a candidate's list: those within r + reach [m] of the
+/// centre x [m], meshTrianglesNear) form a flat patch that covers the disc (plane of the patch) x
+/// ball(x, r + reach): every vertex of them lies within kFlatSlack times the mesh's size of the
+/// plane of near[0] (coplanar to round-off; their normals then agree up to sign), and every edge
+/// of them that comes within r + reach of x has exactly two users, both listed, on opposite sides
+/// of it (an interior edge). Why that covers the disc, and why the sphere's only contact until the
+/// next rebuild is then the plane contact of near[0] (trianglePlaneContact): wall_contacts.h.
+bool meshPatchFlat(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach,
+                   const std::uint32_t* near, std::size_t nearCount);
+
+/// Coplanarity slack of meshPatchFlat, relative to the mesh's bounding-box diagonal: a vertex
+/// farther than this from the patch's plane makes the patch not flat. Vertices written as exact
+/// coplanar coordinates land on the plane to a few ulps of the mesh's extent (~1e-16 relative);
+/// 1e-12 leaves room for meshes transformed by a rotation or read from text, and moves a contact
+/// by at most 1e-12 of the mesh size (1e-13 m for a 0.1 m mesh: below 1e-7 of a typical overlap).
+inline constexpr Real kFlatSlack = 1e-12;
 
 /// True if the sphere is within `reach` [m] of the mesh surface (the candidate-list test).
 bool wallNear(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, Real reach);
