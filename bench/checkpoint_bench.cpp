@@ -3,6 +3,7 @@
 // times so the neighbour list and its contact history are those of a dense bed; then
 // writeDemCheckpoint (fsync and rename included) and readDemCheckpoint, three times each.
 //   checkpoint_bench [DIR] [STEPS]   (DIR default /tmp, STEPS default 20)
+#include "bench_args.h"
 #include "dem/world.h"
 #include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
@@ -43,16 +44,12 @@ spacing = 0.002001
 velocity = [0.01, 0.005, -0.01]
 )";
 
-double seconds(std::chrono::steady_clock::time_point since)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
 } // namespace
 
 int main(int argc, char** argv)
 {
     using namespace veridem;
+    using bench::seconds;
     const std::filesystem::path dir = argc > 1 ? argv[1] : "/tmp";
     const int steps = argc > 2 ? std::stoi(argv[2]) : 20;
     const toml::table table = io::parseText(kScene, "checkpoint_bench.toml");

@@ -11,6 +11,7 @@
 //   veridem_flow_event_bench [--particles N] [--count K] [--threads T]
 //
 // N defaults to 1e5, K to 1000. Times are wall-clock on the given threads (default 1).
+#include "bench_args.h"
 #include "dem/particle_changes.h"
 #include "dem/particle_flow.h"
 #include "dem/world.h"
@@ -24,32 +25,11 @@
 #include <string>
 
 using namespace veridem;
+using bench::seconds;
+using bench::wholeNumber;
 
 namespace
 {
-
-long long wholeNumber(const std::string& option, const std::string& text, long long low, long long high)
-{
-    std::size_t used = 0;
-    long long value = 0;
-    try
-    {
-        value = std::stoll(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != text.size() || value < low || value > high)
-        throw std::runtime_error(option + ": expected a whole number from " + std::to_string(low) + " to " +
-                                 std::to_string(high) + ", got '" + text + "'");
-    return value;
-}
-
-double seconds(std::chrono::steady_clock::time_point since)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
 
 dem::Wall plane(const char* name, const Vec3& point, const Vec3& normal)
 {

@@ -11,6 +11,7 @@
 // particle-steps per second of the steps alone, the events' time against the steps' time, the
 // peak RSS per particle at the largest count, and the kinetic energy at the end (the same bits on
 // any thread count).
+#include "bench_args.h"
 #include "dem/world.h"
 #include "exec/thread_pool.h"
 #include "io/dem_scene.h"
@@ -23,6 +24,7 @@
 #include <sys/resource.h>
 
 using namespace veridem;
+using bench::wholeNumber;
 
 namespace
 {
@@ -33,24 +35,6 @@ struct Options
     int threads = 1;
     long long steps = 0; // 0: the scene's duration
 };
-
-long long wholeNumber(const std::string& option, const std::string& text, long long low, long long high)
-{
-    std::size_t used = 0;
-    long long value = 0;
-    try
-    {
-        value = std::stoll(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != text.size() || value < low || value > high)
-        throw std::runtime_error(option + ": expected a whole number from " + std::to_string(low) + " to " +
-                                 std::to_string(high) + ", got '" + text + "'");
-    return value;
-}
 
 Options parse(int argc, char** argv)
 {

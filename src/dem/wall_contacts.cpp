@@ -59,6 +59,63 @@ WallLoad wallLoad(const WallContactList& list, std::uint32_t w, const Vec3& refe
     return {-force, cross(reference, force) - moment};
 }
 
+namespace
+{
+
+/// Candidate slots, sorted by (particle, wall): per slot its particle and wall and, when some wall
+/// is a mesh, its triangles' count (a mesh group's first slot: its triangles within r + reach; a
+/// flat candidate's one slot: 1, its plane's triangle; 0 otherwise) and its flat mark (the plane's
+/// triangle, or WallContactList::kNotFlat).
+struct CandidateSlots
+{
+    std::vector<std::uint32_t> particle, wall, triangleCount, triangles, flat;
+};
+
+/// Appends particle i's candidates with `walls` within `reach` [m] (wallNear; for a mesh,
+/// meshTrianglesNear and meshPatchFlat) to `out`; `anyMesh`: some wall is a mesh.
+void appendCandidates(const ParticleStore& particles, std::size_t i, const std::vector<Wall>& walls,
+                      Real reach, bool anyMesh, CandidateSlots& out)
+{
+    const Vec3& x = particles.position[i];
+    const Real r = particles.radius[i];
+    const auto slot = [&](std::size_t w, std::uint32_t triangleCount, std::uint32_t flat)
+    {
+        out.particle.push_back(static_cast<std::uint32_t>(i));
+        out.wall.push_back(static_cast<std::uint32_t>(w));
+        if (anyMesh)
+        {
+            out.triangleCount.push_back(triangleCount);
+            out.flat.push_back(flat);
+        }
+    };
+    for (std::size_t w = 0; w < walls.size(); ++w)
+    {
+        const Wall& candidate = walls[w];
+        const auto* mesh = std::get_if<MeshShape>(&candidate.shape);
+        if (mesh && wallActive(candidate))
+        {
+            const std::size_t near =
+                meshTrianglesNear(*mesh, candidate.displacement, x, r, reach, out.triangles);
+            if (near == 0)
+                continue;
+            const std::size_t listed = out.triangles.size() - near;
+            if (meshPatchFlat(*mesh, candidate.displacement, x, r, reach, out.triangles.data() + listed,
+                              near))
+            {
+                out.triangles.resize(listed + 1);
+                slot(w, 1, out.triangles[listed]);
+                continue;
+            }
+            for (int q = 0; q < kMeshSlots; ++q)
+                slot(w, q == 0 ? static_cast<std::uint32_t>(near) : 0, WallContactList::kNotFlat);
+        }
+        else if (!mesh && wallNear(candidate, x, r, reach))
+            slot(w, 0, WallContactList::kNotFlat);
+    }
+}
+
+} // namespace
+
 void WallContactList::rebuild(const ParticleStore& particles, const std::vector<Wall>& walls, Real skin,
                               ContactHistoryStore& history)
 {
@@ -83,76 +140,22 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     // (A mesh candidate's slots: its triangles' count on the first, 0 on the others; a flat one's
     // one slot: 1, its plane's triangle.)
     const int chunks = std::min(loopThreads(n), 64);
-    std::vector<std::vector<std::uint32_t>> chunkParticle(static_cast<std::size_t>(chunks)),
-        chunkWall(static_cast<std::size_t>(chunks)), chunkTriangleCount(static_cast<std::size_t>(chunks)),
-        chunkTriangles(static_cast<std::size_t>(chunks)), chunkFlat(static_cast<std::size_t>(chunks));
+    std::vector<CandidateSlots> chunkSlots(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
                    {
-                       auto& ps = chunkParticle[static_cast<std::size_t>(c)];
-                       auto& ws = chunkWall[static_cast<std::size_t>(c)];
-                       auto& counts = chunkTriangleCount[static_cast<std::size_t>(c)];
-                       auto& triangles = chunkTriangles[static_cast<std::size_t>(c)];
-                       auto& flat = chunkFlat[static_cast<std::size_t>(c)];
                        for (std::size_t i = begin; i < end; ++i)
-                           for (std::size_t w = 0; w < walls.size(); ++w)
-                           {
-                               const Wall& candidate = walls[w];
-                               const Vec3& x = particles.position[i];
-                               const Real r = particles.radius[i];
-                               const auto* mesh = std::get_if<MeshShape>(&candidate.shape);
-                               if (mesh && wallActive(candidate))
-                               {
-                                   const std::size_t near = meshTrianglesNear(*mesh, candidate.displacement,
-                                                                              x, r, skin, triangles);
-                                   if (near == 0)
-                                       continue;
-                                   const std::size_t listed = triangles.size() - near;
-                                   if (meshPatchFlat(*mesh, candidate.displacement, x, r, skin,
-                                                     triangles.data() + listed, near))
-                                   {
-                                       triangles.resize(listed + 1);
-                                       ps.push_back(static_cast<std::uint32_t>(i));
-                                       ws.push_back(static_cast<std::uint32_t>(w));
-                                       counts.push_back(1);
-                                       flat.push_back(triangles[listed]);
-                                       continue;
-                                   }
-                                   for (int q = 0; q < kMeshSlots; ++q)
-                                   {
-                                       ps.push_back(static_cast<std::uint32_t>(i));
-                                       ws.push_back(static_cast<std::uint32_t>(w));
-                                       counts.push_back(q == 0 ? static_cast<std::uint32_t>(near) : 0);
-                                       flat.push_back(kNotFlat);
-                                   }
-                               }
-                               else if (!mesh && wallNear(candidate, x, r, skin))
-                               {
-                                   ps.push_back(static_cast<std::uint32_t>(i));
-                                   ws.push_back(static_cast<std::uint32_t>(w));
-                                   if (anyMesh)
-                                   {
-                                       counts.push_back(0);
-                                       flat.push_back(kNotFlat);
-                                   }
-                               }
-                           }
+                           appendCandidates(particles, i, walls, skin, anyMesh,
+                                            chunkSlots[static_cast<std::size_t>(c)]);
                    });
     std::vector<std::uint32_t> newParticle, newWall, triangleStart, triangles, newFlat;
-    for (int c = 0; c < chunks; ++c)
+    for (const CandidateSlots& part : chunkSlots)
     {
-        const auto& ps = chunkParticle[static_cast<std::size_t>(c)];
-        const auto& ws = chunkWall[static_cast<std::size_t>(c)];
-        newParticle.insert(newParticle.end(), ps.begin(), ps.end());
-        newWall.insert(newWall.end(), ws.begin(), ws.end());
-        if (anyMesh)
-        {
-            triangleStart.insert(triangleStart.end(), chunkTriangleCount[std::size_t(c)].begin(),
-                                 chunkTriangleCount[std::size_t(c)].end());
-            triangles.insert(triangles.end(), chunkTriangles[std::size_t(c)].begin(),
-                             chunkTriangles[std::size_t(c)].end());
-            newFlat.insert(newFlat.end(), chunkFlat[std::size_t(c)].begin(), chunkFlat[std::size_t(c)].end());
-        }
+        newParticle.insert(newParticle.end(), part.particle.begin(), part.particle.end());
+        newWall.insert(newWall.end(), part.wall.begin(), part.wall.end());
+        triangleStart.insert(triangleStart.end(), part.triangleCount.begin(), part.triangleCount.end());
+        triangles.insert(triangles.end(), part.triangles.begin(), part.triangles.end());
+        newFlat.insert(newFlat.end(), part.flat.begin(), part.flat.end());
     }
     const std::size_t count = newParticle.size();
     if (anyMesh) // counts to offsets
@@ -239,51 +242,29 @@ void WallContactList::appendParticles(const ParticleStore& particles, std::size_
                                       const std::vector<Wall>& walls, Real reach,
                                       ContactHistoryStore& history)
 {
-    // (The loop of rebuild() for one particle, appending; the triangle lists only where they are
-    // kept: after a restore the step uses the mesh grids until the next rebuild.)
+    // The triangle lists only where they are kept: after a restore the step uses the mesh grids
+    // until the next rebuild.
     const bool triangleLists = meshTriangleStart.size() == particle.size() + 1;
-    const bool normals = !meshNormal.empty() || !wallTurnAtBuild_.empty();
-    std::vector<std::uint32_t> near;
+    const bool anyMesh = !meshNormal.empty() || !wallTurnAtBuild_.empty();
+    CandidateSlots added;
     for (std::size_t i = from; i < particles.size(); ++i)
     {
-        const Vec3& x = particles.position[i];
-        const Real r = particles.radius[i];
-        for (std::size_t w = 0; w < walls.size(); ++w)
-        {
-            const Wall& candidate = walls[w];
-            const auto* mesh = std::get_if<MeshShape>(&candidate.shape);
-            if (mesh && wallActive(candidate))
-            {
-                near.clear();
-                const std::size_t count = meshTrianglesNear(*mesh, candidate.displacement, x, r, reach, near);
-                if (count == 0)
-                    continue;
-                for (int q = 0; q < kMeshSlots; ++q)
-                {
-                    particle.push_back(static_cast<std::uint32_t>(i));
-                    wall.push_back(static_cast<std::uint32_t>(w));
-                    if (triangleLists)
-                        meshTriangleStart.push_back(meshTriangleStart.back() +
-                                                    static_cast<std::uint32_t>(q == 0 ? count : 0));
-                }
-                if (triangleLists)
-                    meshTriangles.insert(meshTriangles.end(), near.begin(), near.end());
-            }
-            else if (!mesh && wallNear(candidate, x, r, reach))
-            {
-                particle.push_back(static_cast<std::uint32_t>(i));
-                wall.push_back(static_cast<std::uint32_t>(w));
-                if (triangleLists)
-                    meshTriangleStart.push_back(meshTriangleStart.back());
-            }
-        }
-        start.push_back(static_cast<std::uint32_t>(particle.size()));
+        appendCandidates(particles, i, walls, reach, anyMesh, added);
+        start.push_back(static_cast<std::uint32_t>(particle.size() + added.particle.size()));
     }
+    particle.insert(particle.end(), added.particle.begin(), added.particle.end());
+    wall.insert(wall.end(), added.wall.begin(), added.wall.end());
     const std::size_t count = particle.size();
-    if (normals) // (an appended mesh candidate is general: kMeshSlots slots, none flat)
+    if (anyMesh)
     {
+        if (triangleLists)
+        {
+            for (const std::uint32_t c : added.triangleCount)
+                meshTriangleStart.push_back(meshTriangleStart.back() + c);
+            meshTriangles.insert(meshTriangles.end(), added.triangles.begin(), added.triangles.end());
+        }
         meshNormal.resize(count, Vec3{});
-        meshFlat.resize(count, kNotFlat);
+        meshFlat.insert(meshFlat.end(), added.flat.begin(), added.flat.end());
     }
     history.spring.resize(count, Vec3{});
     if (history.keepRolling)

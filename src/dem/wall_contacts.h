@@ -134,8 +134,8 @@ class WallContactList
     /// at the end (the new particles have the highest indices, so the order is kept). They are
     /// searched within `reach` [m] of the walls' current places: 1.5 skin, since until the next
     /// rebuild a particle moves at most skin/2 from here and a wall up to skin from where it is
-    /// now (skin/2 either side of where it was at the last build). An appended mesh candidate takes
-    /// kMeshSlots general slots (the next rebuild may find it flat). O(particles appended x walls).
+    /// now (skin/2 either side of where it was at the last build). The candidates are those a rebuild
+    /// would make within that reach (flat mesh candidates included). O(particles appended x walls).
     void appendParticles(const ParticleStore& particles, std::size_t from, const std::vector<Wall>& walls,
                          Real reach, ContactHistoryStore& history);
 
