@@ -258,7 +258,7 @@ void NeighborList::rebuild(const ParticleStore& particles, ContactHistoryStore& 
     // Candidate pairs: for each i, every j > i within r_i + r_j + skin + reach, ascending
     // (pair_search.h: O(N) for any mix of sizes).
     std::vector<std::uint32_t> newSecond;
-    findPairsWithin(particles, skin + reach, firstStart, newSecond);
+    findPairsWithin(particles, skin + reach, firstStart, newSecond, second.size());
     for (std::size_t i = 0; i < n; ++i)
         firstStart[i + 1] += firstStart[i];
     const std::size_t pairCount = firstStart[n];

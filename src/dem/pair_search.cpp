@@ -58,7 +58,7 @@ int sizeClassCount(Real smallest, Real largest)
 }
 
 void findPairsWithin(const ParticleStore& particles, Real search, std::vector<std::uint32_t>& count,
-                     std::vector<std::uint32_t>& partners)
+                     std::vector<std::uint32_t>& partners, std::size_t expected)
 {
     const std::size_t n = particles.size();
     partners.clear();
@@ -144,6 +144,9 @@ void findPairsWithin(const ParticleStore& particles, Real search, std::vector<st
     // (one per thread) collects its own pairs; the chunks are concatenated in order.
     const int chunks = std::min(loopThreads(n), 64);
     std::vector<std::vector<std::uint32_t>> chunkPartners(static_cast<std::size_t>(chunks));
+    if (expected > 0 && chunks > 1)
+        for (auto& part : chunkPartners)
+            part.reserve((expected + expected / 8) / static_cast<std::size_t>(chunks) + 64);
     parallelChunks(
         n, chunks,
         [&](int chunk, std::size_t begin, std::size_t end)

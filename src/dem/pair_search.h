@@ -28,9 +28,12 @@ namespace veridem::dem
 
 /// Finds, for each particle i, the particles j > i with |x_i - x_j| < r_i + r_j + search [m]:
 /// count[i + 1] is set to i's number of partners (count has n + 1 entries; count[0] untouched)
-/// and `partners` receives every i's partners in ascending j, i after i.
+/// and `partners` receives every i's partners in ascending j, i after i. `expected`: the pairs
+/// expected (the last search's count; 0 if unknown): each chunk's buffer is reserved for its share
+/// plus an eighth on the calling thread, so that the worker threads rarely allocate (a worker's
+/// malloc arena keeps the memory it frees).
 void findPairsWithin(const ParticleStore& particles, Real search, std::vector<std::uint32_t>& count,
-                     std::vector<std::uint32_t>& partners);
+                     std::vector<std::uint32_t>& partners, std::size_t expected = 0);
 
 /// The number of size classes the search uses for radii in [smallest, largest] [m] (1 when
 /// largest <= 2 smallest; at most kMaxSizeClasses).

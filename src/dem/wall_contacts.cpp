@@ -141,6 +141,20 @@ void WallContactList::rebuild(const ParticleStore& particles, const std::vector<
     // one slot: 1, its plane's triangle.)
     const int chunks = std::min(loopThreads(n), 64);
     std::vector<CandidateSlots> chunkSlots(static_cast<std::size_t>(chunks));
+    if (chunks > 1) // (reserved here: a worker thread's malloc arena would keep what it frees)
+        for (CandidateSlots& part : chunkSlots)
+        {
+            const auto share = [&](std::size_t total)
+            { return (total + total / 8) / static_cast<std::size_t>(chunks) + 16; };
+            part.particle.reserve(share(particle.size()));
+            part.wall.reserve(share(particle.size()));
+            if (anyMesh)
+            {
+                part.triangleCount.reserve(share(particle.size()));
+                part.flat.reserve(share(particle.size()));
+                part.triangles.reserve(share(meshTriangles.size()));
+            }
+        }
     parallelChunks(n, chunks,
                    [&](int c, std::size_t begin, std::size_t end)
                    {
