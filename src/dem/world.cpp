@@ -27,6 +27,7 @@
 #include "dem/world.h"
 
 #include "core/error.h"
+#include "core/release_free_memory.h"
 #include "dem/contact_law.h"
 #include "dem/forces.h"
 #include "dem/integrate.h"
@@ -110,6 +111,7 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
         world.periodicPairs.handOver(world.neighbors, world.pairHistory);
     world.neighbors.rebuild(world.particles, world.pairHistory);
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
+    releaseFreeMemory(); // the rebuild's temporaries, out of the resident set
 }
 
 /// Holds the frozen particles: back to their positions (and position rows) with zero velocity and
