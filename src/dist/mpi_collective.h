@@ -1,0 +1,26 @@
+// The collective operations of dist/collective.h over MPI (built when CMake finds MPI).
+#pragma once
+
+#include "dist/collective.h"
+
+#include <mpi.h>
+
+namespace veridem::dist
+{
+
+class MpiCollective final : public Collective
+{
+  public:
+    /// The ranks of `comm` (MPI must be initialised).
+    explicit MpiCollective(MPI_Comm comm = MPI_COMM_WORLD);
+    void sum(std::span<std::uint64_t> values) const override;
+    void max(std::span<double> values) const override;
+    int rank() const override { return rank_; }
+    int size() const override { return size_; }
+
+  private:
+    MPI_Comm comm_;
+    int rank_ = 0, size_ = 1;
+};
+
+} // namespace veridem::dist
