@@ -1,5 +1,7 @@
 #include "dem/particle_changes.h"
 
+#include "dem/contact_law.h"
+
 #include <algorithm>
 #include <functional>
 #include <numeric>
@@ -47,15 +49,35 @@ void removeParticles(World& world, std::vector<std::uint32_t> doomed)
     world.periodicPairs.renameParticles(newIndex);
 }
 
-bool insertsWithoutRebuild(const World& world, std::size_t particleCount)
+bool insertsWithoutRebuild(const World& world, std::size_t particleCount, Real largestRadius)
 {
-    if (!world.prepared || world.domain.any() || !world.neighbors.builtFor(particleCount) ||
+    if (!world.prepared || !world.neighbors.builtFor(particleCount) ||
         world.wallContacts.start.size() != particleCount + 1 || world.pairs.count() != world.materials.size())
         return false;
-    for (std::uint32_t a = 0; a < world.pairs.count(); ++a)
+    // The list's touch reach (JKR adhesion, NeighborList::reach) must cover the new particles'
+    // pairs with any material at the largest radius (touchReach grows with R*), or be widened by
+    // a rebuild. A reach wider than a pair's own changes nothing: the law decides whether a pair
+    // within it is formed.
+    const ParticleStore& p = world.particles;
+    std::vector<bool> seen(world.materials.size(), false);
+    for (std::size_t i = particleCount; i < p.size(); ++i)
+    {
+        const std::uint32_t a = p.material[i];
+        if (seen[a])
+            continue;
+        seen[a] = true;
         for (std::uint32_t b = 0; b < world.pairs.count(); ++b)
-            if (world.pairs(a, b).normalModel == NormalModel::Jkr)
+            if (touchReach(world.pairs(a, b), 0.5 * largestRadius) > world.neighbors.reach)
                 return false;
+    }
+    // A periodic axis must hold the inserted pairs' search twice, so that a pair has at most one
+    // image within it (the key (i, j) of its history names one contact).
+    const Vec3 edge = world.domain.length();
+    const Real edges[3] = {edge.x, edge.y, edge.z};
+    const Real cutoff = 2 * largestRadius + insertedPairSearch(world.neighbors);
+    for (int a = 0; a < 3; ++a)
+        if (world.domain.periodic[a] && !(edges[a] >= 2 * cutoff))
+            return false;
     return true;
 }
 
@@ -64,19 +86,30 @@ void addInsertedParticles(World& world, std::size_t from, const ParticleIndex& i
     const ParticleStore& p = world.particles;
     const Real search = insertedPairSearch(world.neighbors);
     std::vector<std::uint32_t> first, second;
+    std::vector<Vec3> shift;
     for (std::size_t i = from; i < p.size(); ++i)
     {
         const Vec3 xi = p.position[i];
         const Real ri = p.radius[i];
-        index.forEachNear(xi,
-                          [&](std::uint32_t j)
+        // Through a periodic face: particle j's image x_j - s near xi, i.e. x_j near xi + s (every
+        // particle is within skin/2 of the box: wrapped at the last rebuild).
+        const Real near = ri + index.largestRadius() + search + 0.5 * world.neighbors.skin;
+        forEachImageShift(world.domain, xi, near,
+                          [&](const Vec3& s)
                           {
-                              const Real within = ri + p.radius[j] + search;
-                              if (j < i && lengthSquared(xi - p.position[j]) < within * within)
-                              {
-                                  first.push_back(j);
-                                  second.push_back(static_cast<std::uint32_t>(i));
-                              }
+                              const Vec3 q = xi + s;
+                              index.forEachNear(q,
+                                                [&](std::uint32_t j)
+                                                {
+                                                    const Real within = ri + p.radius[j] + search;
+                                                    if (j < i &&
+                                                        lengthSquared(p.position[j] - q) < within * within)
+                                                    {
+                                                        first.push_back(j);
+                                                        second.push_back(static_cast<std::uint32_t>(i));
+                                                        shift.push_back(s);
+                                                    }
+                                                });
                           });
     }
     world.neighbors.appendParticles(p, from);
@@ -84,7 +117,7 @@ void addInsertedParticles(World& world, std::size_t from, const ParticleIndex& i
     {
         // (Rolling springs kept as the pair candidates keep them: an EPSD model is in use.)
         world.periodicPairs.history.keepRolling = world.pairHistory.keepRolling;
-        world.periodicPairs.addPairs(p, world.neighbors.anyFixed, first, second);
+        world.periodicPairs.addPairs(p, world.neighbors.anyFixed, first, second, shift);
     }
     // Walls: skin/2 of the particle's motion plus up to skin of the wall's (WallContactList).
     world.wallContacts.appendParticles(p, from, world.walls, 1.5 * world.neighbors.skin, world.wallHistory);

@@ -4,8 +4,9 @@
 // Insertion, without a rebuild (addInsertedParticles). The new particles are appended to the
 // store, so every existing index, slot and history entry stays as it is. Their pairs (with the
 // particles near them and with each other) are found on a grid kept between events
-// (ParticleIndex) and join the list of pairs evaluated after the pair stage (World::periodicPairs,
-// shift 0: the same law through pairContactAt, history by (i, j)); their wall candidates are
+// (ParticleIndex) and join the list of pairs evaluated after the pair stage (World::periodicPairs:
+// the same law through pairContactAt, history by (i, j); shift 0, or in a periodic box the shift
+// of the partner's image, looked for near each image of the new particle); their wall candidates are
 // appended to the wall-contact list; their displacement is measured from where they were
 // inserted. Until the next rebuild of the contact lists, which the step makes when some particle
 // has moved more than skin/2 (world.cpp), no particle or wall moves far enough to reach an
@@ -43,15 +44,20 @@ inline Real insertedPairSearch(const NeighborList& list)
     return 1.5 * list.skin + list.reach;
 }
 
-/// True if particles can be inserted into `world` without a rebuild (addInsertedParticles): the
-/// contact lists are built for its `particleCount` particles, no axis is periodic (an inserted
-/// particle's images are not searched) and no pair of materials has a touch reach (JKR adhesion:
-/// a new material or radius could widen NeighborList::reach).
-bool insertsWithoutRebuild(const World& world, std::size_t particleCount);
+/// True if particles of radius up to `largestRadius` [m] (the largest of the particles near them
+/// too: ParticleIndex::largestRadius) can be inserted into `world` without a rebuild
+/// (addInsertedParticles): the contact lists are built for its `particleCount` particles, each
+/// periodic axis is at least twice 2 largestRadius + insertedPairSearch long (a pair then has at
+/// most one image within reach, as PeriodicPairs needs), and the list's touch reach
+/// (NeighborList::reach, JKR adhesion) covers the pairs of the particles appended since
+/// [particleCount, size) with every material at that radius.
+bool insertsWithoutRebuild(const World& world, std::size_t particleCount, Real largestRadius);
 
 /// Takes the particles [from, size) appended to the store since the last step into the contact
-/// lists without a rebuild (file comment). `index` holds every particle (ParticleIndex, valid for
-/// the list with the extra reach insertedPairSearch). Needs insertsWithoutRebuild(world, from).
+/// lists without a rebuild (file comment); in a periodic box their pairs through a face too, with
+/// their image shifts. `index` holds every particle near the inserted ones and their images
+/// (ParticleIndex, valid for the list with the extra reach insertedPairSearch). Needs
+/// insertsWithoutRebuild(world, from, index.largestRadius()).
 void addInsertedParticles(World& world, std::size_t from, const ParticleIndex& index);
 
 } // namespace veridem::dem

@@ -169,15 +169,23 @@ bool behind(const Inserter& in, Real t, Real dt)
     return false;
 }
 
-/// True if a sphere (x, r) [m] overlaps no particle (`index` holds them all).
-bool freeOfParticles(const ParticleStore& p, const ParticleIndex& index, const Vec3& x, Real r)
+/// True if a sphere (x, r) [m] overlaps no particle, nor a particle's image in a periodic box
+/// (`index` holds every particle near x and its images).
+bool freeOfParticles(const World& world, const ParticleIndex& index, const Vec3& x, Real r)
 {
+    const ParticleStore& p = world.particles;
     bool free = true;
-    index.forEachNear(x,
-                      [&](std::uint32_t j)
+    forEachImageShift(world.domain, x, r + index.largestRadius() + 0.5 * world.neighbors.skin,
+                      [&](const Vec3& s)
                       {
-                          const Real reach = r + p.radius[j];
-                          free = free && !(lengthSquared(x - p.position[j]) < reach * reach);
+                          const Vec3 q = x + s;
+                          index.forEachNear(q,
+                                            [&](std::uint32_t j)
+                                            {
+                                                const Real reach = r + p.radius[j];
+                                                free = free &&
+                                                       !(lengthSquared(q - p.position[j]) < reach * reach);
+                                            });
                       });
     return free;
 }
@@ -211,7 +219,8 @@ std::size_t insert(World& world, Inserter& in, ParticleIndex& index, std::uint32
         {
             if (!in.region.sample(in.random, r, x))
                 break;
-            placed = freeOfParticles(p, index, x, r);
+            x = wrapPosition(world.domain, x); // (a region across a periodic face)
+            placed = freeOfParticles(world, index, x, r);
             for (std::size_t w = 0; placed && w < world.walls.size(); ++w)
                 placed = !wallGap(world.walls[w], x, r).touching;
         }
@@ -287,13 +296,27 @@ bool ParticleFlow::apply(World& world, Real dt)
             lo = first ? a : Vec3{std::fmin(lo.x, a.x), std::fmin(lo.y, a.y), std::fmin(lo.z, a.z)};
             hi = first ? b : Vec3{std::fmax(hi.x, b.x), std::fmax(hi.y, b.y), std::fmax(hi.z, b.z)};
         }
+        // Along a periodic axis the whole box: a new particle near one face meets the particles
+        // near the other through their images.
+        const auto widen = [](Real& a, Real& b, Real boxMin, Real boxMax)
+        {
+            a = std::fmin(a, boxMin);
+            b = std::fmax(b, boxMax);
+        };
+        const PeriodicDomain& box = world.domain;
+        if (box.periodic[0])
+            widen(lo.x, hi.x, box.min.x, box.max.x);
+        if (box.periodic[1])
+            widen(lo.y, hi.y, box.min.y, box.max.y);
+        if (box.periodic[2])
+            widen(lo.z, hi.z, box.min.z, box.max.z);
         index.build(p, world.neighbors, newRadius, extra, lo, hi);
     }
     for (Inserter& in : inserters)
         insert(world, in, index, nextId, t, dt);
     if (p.size() == before)
         return removed;
-    if (insertsWithoutRebuild(world, before))
+    if (insertsWithoutRebuild(world, before, index.largestRadius()))
         addInsertedParticles(world, before, index);
     else
         rebuildAfterParticleChange(world);

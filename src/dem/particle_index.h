@@ -59,6 +59,8 @@ class ParticleIndex
                         visit(j);
     }
 
+    /// R [m]: the largest radius binned or announced for appending (build's newRadius).
+    Real largestRadius() const { return radius_; }
     std::size_t size() const { return next_.size(); }
     std::size_t builds() const { return builds_; }
 

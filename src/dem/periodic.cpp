@@ -345,7 +345,7 @@ void PeriodicPairs::handOver(NeighborList& neighbors, ContactHistoryStore& pairH
 
 void PeriodicPairs::addPairs(const ParticleStore& particles, bool anyFixed,
                              const std::vector<std::uint32_t>& newFirst,
-                             const std::vector<std::uint32_t>& newSecond)
+                             const std::vector<std::uint32_t>& newSecond, const std::vector<Vec3>& newShift)
 {
     struct Entry
     {
@@ -381,7 +381,7 @@ void PeriodicPairs::addPairs(const ParticleStore& particles, bool anyFixed,
         Real m = effectivePairMass(mi, mj);
         if (anyFixed && (particles.fixed[i] || particles.fixed[j]))
             m = particles.fixed[i] ? mj : mi;
-        merged.shift.push_back(Vec3{}); // a direct pair: no image
+        merged.shift.push_back(newShift[e.from - old]);
         merged.mass.push_back(m);
         merged.history.spring.push_back(Vec3{});
         if (history.keepRolling)

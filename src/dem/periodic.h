@@ -52,6 +52,32 @@ struct PeriodicDomain
 /// x wrapped into [min, max) along each periodic axis (the other components unchanged) [m].
 Vec3 wrapPosition(const PeriodicDomain& domain, const Vec3& x);
 
+/// Calls f(s) for s = 0 and for every image shift s (a sum of +-box edges along periodic axes)
+/// under which x + s comes within d [m] of the box: with every particle within d of the box,
+/// the particles near x through an image are among those near x + s (their image x_j - s is near
+/// x). At most 27 calls, in a fixed order.
+template <class F> void forEachImageShift(const PeriodicDomain& domain, const Vec3& x, Real d, F&& f)
+{
+    const Vec3 lo = domain.min, hi = domain.max, edge = domain.length();
+    const Real xs[3] = {x.x, x.y, x.z}, los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z},
+               edges[3] = {edge.x, edge.y, edge.z};
+    Real options[3][3];
+    int count[3];
+    for (int a = 0; a < 3; ++a)
+    {
+        count[a] = 0;
+        options[a][count[a]++] = 0;
+        if (domain.periodic[a] && xs[a] - los[a] < d) // near the low face: its image past the high one
+            options[a][count[a]++] = edges[a];
+        if (domain.periodic[a] && his[a] - xs[a] < d)
+            options[a][count[a]++] = -edges[a];
+    }
+    for (int i = 0; i < count[0]; ++i)
+        for (int j = 0; j < count[1]; ++j)
+            for (int k = 0; k < count[2]; ++k)
+                f(Vec3{options[0][i], options[1][j], options[2][k]});
+}
+
 /// The largest pair search distance the box must hold twice along a periodic axis [m]:
 /// 2 r_max + search (search = skin + reach beyond r_i + r_j).
 inline Real periodicCutoff(Real maxRadius, Real search)
@@ -94,12 +120,13 @@ class PeriodicPairs
     /// order flips has its springs and shift negated; a pair with a removed particle is dropped.
     void renameParticles(const std::vector<std::uint32_t>& newIndex);
 
-    /// Adds the direct pairs (newFirst[k] < newSecond[k], shift 0, fresh history) of particles
-    /// inserted between steps without a rebuild (dem/particle_changes.h, addInsertedParticles),
-    /// none of them already listed; the list stays sorted by (i, j). m* as NeighborList's
-    /// (`anyFixed`: some particle is frozen). O((pairs listed + added) log).
+    /// Adds the pairs (newFirst[k] < newSecond[k], image shift newShift[k] [m], 0 for a direct
+    /// pair, fresh history) of particles inserted between steps without a rebuild
+    /// (dem/particle_changes.h, addInsertedParticles), none of them already listed; the list
+    /// stays sorted by (i, j). m* as NeighborList's (`anyFixed`: some particle is frozen).
+    /// O((pairs listed + added) log).
     void addPairs(const ParticleStore& particles, bool anyFixed, const std::vector<std::uint32_t>& newFirst,
-                  const std::vector<std::uint32_t>& newSecond);
+                  const std::vector<std::uint32_t>& newSecond, const std::vector<Vec3>& newShift);
     /// Without periodic axes, at a rebuild of the contact lists: every pair that may be in contact
     /// joins `neighbors`' candidates with its history (as rebuild() hands over the pairs that stop
     /// being periodic), and the list is emptied. Call before NeighborList::rebuild.
