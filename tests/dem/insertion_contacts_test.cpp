@@ -330,3 +330,48 @@ TEST(ParticleChanges, InsertionIntoAPeriodicBoxListsThePairsThroughTheFacesWitho
     EXPECT_TRUE(world.health.finite);
     EXPECT_LT(world.health.maxOverlapRatio, 0.05); // (kn 500 N/m: m g / kn ~ 3e-4 of r per layer)
 }
+
+TEST(ParticleChanges, JkrInsertionSkipsTheRebuildWhileTheTouchReachHolds)
+{
+    // JKR spheres (their contacts act apart, to |delta_c|: the list's touch reach): a sphere of
+    // the radius already present joins the lists without a rebuild, its pair with a sphere at a
+    // separation inside the reach listed; a larger sphere would widen the reach (|delta_c| grows
+    // as R*^(1/3)), so its insertion rebuilds the lists, with the reach recomputed.
+    Material jkr = glass();
+    jkr.normalModel = NormalModel::Jkr;
+    jkr.youngsModulus = 1e7;
+    jkr.poissonRatio = 0.3;
+    jkr.surfaceEnergy = 0.05;
+    World world;
+    world.addMaterial(jkr);
+    world.gravity = {0, 0, 0};
+    world.neighbors.skin = 0.2e-3;
+    const Vec3 xq{0.01, 0.01, 0.01};
+    world.particles.add(xq, {}, {}, 1e-3, 2500, 0);
+    world.particles.add({0.03, 0.03, 0.03}, {}, {}, 1e-3, 2500, 0);
+    prepare(world);
+    const Real reach = world.neighbors.reach;
+    ASSERT_GT(reach, 0);
+    ParticleFlow flow;
+    flow.nextId = 2;
+    // 1 mm sphere whose surface is reach/2 from Q's: apart, but within the adhesive reach.
+    const Vec3 xp = xq + Vec3{2e-3 + 0.5 * reach, 0, 0};
+    flow.inserters.push_back(oneSphereAt(xp, {}));
+    std::size_t rebuilds = world.neighbors.rebuildCount();
+    ASSERT_TRUE(flow.apply(world, 1e-6));
+    EXPECT_EQ(world.neighbors.rebuildCount(), rebuilds);
+    ASSERT_EQ(world.periodicPairs.size(), 1u);
+    EXPECT_EQ(world.periodicPairs.first[0], 0u);
+    EXPECT_EQ(world.periodicPairs.second[0], 2u);
+    EXPECT_EQ(world.neighbors.reach, reach);
+
+    Inserter larger = oneSphereAt({0.02, 0.02, 0.02}, {}); // r = 2 mm, far from the others
+    larger.radius.value = 2e-3;
+    larger.region.min = Vec3{0.02, 0.02, 0.02} - Vec3{2e-3 + 1e-10, 2e-3 + 1e-10, 2e-3 + 1e-10};
+    larger.region.max = Vec3{0.02, 0.02, 0.02} + Vec3{2e-3 + 1e-10, 2e-3 + 1e-10, 2e-3 + 1e-10};
+    flow.inserters = {larger};
+    rebuilds = world.neighbors.rebuildCount();
+    ASSERT_TRUE(flow.apply(world, 1e-6));
+    EXPECT_GT(world.neighbors.rebuildCount(), rebuilds);
+    EXPECT_GT(world.neighbors.reach, reach);
+}
