@@ -266,23 +266,18 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames, bo
     }
 }
 
-/// The gap of mesh slot k in the plane-wall pass, as wallForcesInLanes takes it: a flat slot's
-/// plane (forgetting a replaced contact's history), else the contact matched to the slot.
+/// The gap of flat mesh slot k in the plane-wall pass, as wallForcesInLanes takes it: its plane
+/// (forgetting a replaced contact's history). (A general group is matched whole in the pass.)
 VERIDEM_HOT_INLINE WallGap meshSlotGapInPass(World& world, std::size_t k, const MeshShape& shape,
-                                             const Vec3& x, Real r,
-                                             std::optional<WallContactList::MeshGroup>& group)
+                                             const Vec3& x, Real r)
 {
     WallContactList& list = world.wallContacts;
-    if (list.meshFlat[k] != WallContactList::kNotFlat)
-    {
-        bool fresh;
-        const WallGap gap = list.flatSlotGap(k, shape, world.walls[list.wall[k]].displacement, x, r,
-                                             list.meshNormal[k], fresh);
-        if (fresh)
-            world.wallHistory.forget(k);
-        return gap;
-    }
-    return slotGap(list, k, world.walls[list.wall[k]], x, r, group, world.wallHistory);
+    bool fresh;
+    const WallGap gap =
+        list.flatSlotGap(k, shape, world.walls[list.wall[k]].displacement, x, r, list.meshNormal[k], fresh);
+    if (fresh)
+        world.wallHistory.forget(k);
+    return gap;
 }
 
 /// wallForcesInLanes for plane walls (frames from planeFrames): the same gap (wallGap of the plane's
@@ -316,7 +311,9 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     const bool rolling = history.keepRolling;
     const bool loads = list.recordLoads;
     const Real halfStep = 0.5 * dt;
-    std::optional<WallContactList::MeshGroup> group; // (kMeshes: made on the first general mesh slot)
+    std::optional<WallContactList::MeshGroup> group; // (kMeshes only: the general mesh group at hand)
+    if constexpr (kMeshes)
+        group.emplace();
     LawBatch b;
     std::size_t m = 0;
     // (Inlined: a lambda's own function would not have the caller's instruction set.)
@@ -355,24 +352,17 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         m = 0;
         b.models = 0;
     };
-    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    // Slot k of particle i (at x, radius r) against the wall of `frame` with gap `gap`: into the
+    // batch if touching, else its history cleared.
+    const auto add = [&](std::size_t k, std::uint32_t i, const Vec3& x, Real r, const PlaneFrame& frame,
+                         const WallGap& gap) VERIDEM_INLINE_LAMBDA
     {
-        const std::uint32_t i = particle[k];
-        const PlaneFrame& frame = frames[wallOf[k]];
-        const Vec3 x = position[i];
-        const Real r = radius[i];
-        WallGap gap;
-        if constexpr (kMeshes)
-            gap = frame.mesh ? meshSlotGapInPass(world, k, *frame.mesh, x, r, group)
-                             : wallGap(frame.geometry, x, r);
-        else
-            gap = wallGap(frame.geometry, x, r);
         if (!gap.touching)
         {
             spring[k] = Vec3{};
             if (rolling)
                 history.forget(k);
-            continue;
+            return;
         }
         ++health.touching;
         const ContactFrameOf<Real> contact = wallContactFrame(gap.normal, gap.overlap, x, velocity[i],
@@ -382,6 +372,35 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             addContactLaw(b, m, world.pairs(p.material[i], frame.material));
         if (++m == kBatch)
             run();
+    };
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = particle[k];
+        const PlaneFrame& frame = frames[wallOf[k]];
+        const Vec3 x = position[i];
+        const Real r = radius[i];
+        if constexpr (kMeshes)
+            if (frame.mesh && list.meshFlat[k] == WallContactList::kNotFlat)
+            {
+                // A general mesh group: its contacts matched once (meshSlotGap), then its slots
+                // from k on in order, as slotGap hands them out one at a time.
+                world.wallContacts.meshSlotGap(k, world.walls[wallOf[k]], x, r, *group);
+                const std::size_t groupEnd = group->first + group->size;
+                for (; k < groupEnd; ++k)
+                {
+                    if (group->fresh[k - group->first])
+                        history.forget(k);
+                    add(k, i, x, r, frame, group->gap[k - group->first]);
+                }
+                --k; // (the loop's ++k moves on to the next candidate)
+                continue;
+            }
+        WallGap gap;
+        if constexpr (kMeshes)
+            gap = frame.mesh ? meshSlotGapInPass(world, k, *frame.mesh, x, r) : wallGap(frame.geometry, x, r);
+        else
+            gap = wallGap(frame.geometry, x, r);
+        add(k, i, x, r, frame, gap);
     }
     if (m > 0)
         run();
