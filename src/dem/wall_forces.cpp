@@ -49,7 +49,7 @@ VERIDEM_HOT_INLINE WallGap slotGap(WallContactList& list, std::size_t k, const W
     if (!group)
         group.emplace();
     const WallGap gap = list.meshSlotGap(k, wall, x, r, *group);
-    if (group->fresh[k - group->first])
+    if (group->isFresh(k - group->first))
         history.forget(k);
     return gap;
 }
@@ -388,9 +388,13 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
                 const std::size_t groupEnd = group->first + group->size;
                 for (; k < groupEnd; ++k)
                 {
-                    if (group->fresh[k - group->first])
+                    const std::size_t q = k - group->first;
+                    if (group->isFresh(q))
                         history.forget(k);
-                    add(k, i, x, r, frame, group->gap[k - group->first]);
+                    if (group->touching >> q & 1u)
+                        add(k, i, x, r, frame, group->gap[q]);
+                    else
+                        add(k, i, x, r, frame, WallGap{});
                 }
                 --k; // (the loop's ++k moves on to the next candidate)
                 continue;

@@ -89,18 +89,23 @@ union FoundBuffer
 /// sqrt(s^2 + o^2) with s the distance from the triangle's plane and o the largest distance of p
 /// outside the three half-planes bounded by its edges (inward normals, in the plane), exceeds r
 /// by more than the bound's rounding (a relative 1e-10 of the lengths involved), so no contact
-/// findContacts would keep is skipped. A few dot products instead of closestPointOnTriangle for
-/// most listed triangles (those near but not touching).
-bool fartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r)
+/// findContacts would keep is skipped. A few dot products on the triangle's Bound record instead
+/// of closestPointOnTriangle for most listed triangles (those near but not touching); the plane
+/// distance alone decides first when it suffices. With pa = p - v[0], edge e's outside distance
+/// is -(p - v[e]).inward[e]: -pa.inward[e] for edges 0 and 2 (through v[0]), and
+/// -pa.inward[1] - apexHeight for edge 1.
+VERIDEM_HOT_INLINE bool fartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r)
 {
-    const auto& tri = m.triangles[t];
-    const auto& in = m.inward[t];
-    const Vec3 pa = p - m.vertices[tri[0]];
-    const Real s = dot(pa, m.normals[t]);
+    const TriangleMesh::Bound& tb = m.bounds[t];
+    const Vec3 pa = p - tb.corner;
+    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z) + tb.apexHeight);
+    const Real reach = (r + margin) * (r + margin);
+    const Real s = dot(pa, tb.normal);
+    if (s * s > reach)
+        return true;
     const Real o = std::max(
-        {Real(0), -dot(pa, in[0]), -dot(p - m.vertices[tri[1]], in[1]), -dot(p - m.vertices[tri[2]], in[2])});
-    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z));
-    return s * s + o * o > (r + margin) * (r + margin);
+        {Real(0), -dot(pa, tb.inward[0]), -dot(pa, tb.inward[1]) - tb.apexHeight, -dot(pa, tb.inward[2])});
+    return s * s + o * o > reach;
 }
 
 /// Sorts found[0, count) by `before` (a strict weak order), stable: insertion sort, as count is a
@@ -118,21 +123,21 @@ template <class Before> void sortFound(Found* found, int count, Before before)
 }
 
 /// Contacts of body-frame point p (radius r [m]) with the triangles `near` (ascending; every
-/// triangle that touches the sphere among them) after elimination, deepest first.
+/// triangle that touches the sphere among them) after elimination, deepest first, into
+/// found[0, kMaxFound): candidates are gathered there, then sorted and merged in place (no copy
+/// when one contact is found, the common case).
 int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32_t* near,
-                 std::size_t nearCount, Found* out)
+                 std::size_t nearCount, Found* found)
 {
-    FoundBuffer buffer;
-    Found* const found = buffer.item;
     int count = 0;
     for (std::size_t n = 0; n < nearCount; ++n)
     {
         const std::uint32_t t = near[n];
-        const auto& tri = m.triangles[t];
-        const Vec3& a = m.vertices[tri[0]];
         if (fartherThan(m, t, p, r))
             continue;
-        const TrianglePoint cp = closestPointOnTriangle(p, a, m.vertices[tri[1]], m.vertices[tri[2]]);
+        const auto& tri = m.triangles[t];
+        const TrianglePoint cp =
+            closestPointOnTriangle(p, m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
         Found f;
         if (cp.feature == MeshFeature::Face)
         {
@@ -170,6 +175,8 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
         if (!duplicate && count < kMaxFound)
             found[count++] = f;
     }
+    if (count <= 1)
+        return count;
     // Faces first, then deeper, then by id (a deterministic order), and merge equal normals.
     sortFound(found, count,
               [](const Found& x, const Found& y)
@@ -185,33 +192,71 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
     {
         bool merged = false;
         for (int k = 0; k < kept && !merged; ++k)
-            merged = 1 - dot(out[k].normal, found[q].normal) < kSameNormal;
+            merged = 1 - dot(found[k].normal, found[q].normal) < kSameNormal;
         if (!merged)
-            out[kept++] = found[q];
+        {
+            if (kept != q)
+                found[kept] = found[q];
+            ++kept;
+        }
     }
-    sortFound(out, kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
+    sortFound(found, kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
     return kept;
 }
 
 } // namespace
 
-int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
-                 std::size_t nearCount, MeshContact* out)
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     const std::uint32_t* near, std::size_t nearCount, MeshBodyContact* out)
 {
     FoundBuffer buffer;
     Found* const found = buffer.item;
     const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, near, nearCount, found);
     const int kept = std::min(count, kMeshSlots);
     for (int q = 0; q < kept; ++q)
-        out[q] = {found[q].overlap, worldDirection(shape, found[q].normal), found[q].normal};
+    {
+        out[q].overlap = found[q].overlap; // (the normal component by component: as matchMeshGroup's copy)
+        out[q].bodyNormal.x = found[q].normal.x;
+        out[q].bodyNormal.y = found[q].normal.y;
+        out[q].bodyNormal.z = found[q].normal.z;
+    }
     return kept;
 }
 
-int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
+                 std::size_t nearCount, MeshContact* out)
+{
+    MeshBodyContact body[kMeshSlots];
+    const int kept = meshBodyContacts(shape, offset, x, r, near, nearCount, body);
+    for (int q = 0; q < kept; ++q)
+        out[q] = {body[q].overlap, worldDirection(shape, body[q].bodyNormal), body[q].bodyNormal};
+    return kept;
+}
+
+namespace
+{
+
+/// The triangles whose grid cells meet the sphere's box (all that can touch it).
+const std::vector<std::uint32_t>& gridTriangles(const MeshShape& shape, const Vec3& offset, const Vec3& x,
+                                                Real r)
 {
     thread_local std::vector<std::uint32_t> near;
     const Vec3 p = bodyPoint(shape, offset, x), span{r, r, r};
     shape.mesh->trianglesNear(p - span, p + span, near);
+    return near;
+}
+
+} // namespace
+
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshBodyContact* out)
+{
+    const std::vector<std::uint32_t>& near = gridTriangles(shape, offset, x, r);
+    return meshBodyContacts(shape, offset, x, r, near.data(), near.size(), out);
+}
+
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+{
+    const std::vector<std::uint32_t>& near = gridTriangles(shape, offset, x, r);
     return meshContacts(shape, offset, x, r, near.data(), near.size(), out);
 }
 

@@ -101,6 +101,19 @@ int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
                  std::size_t nearCount, MeshContact* out);
 
+/// A contact of meshContacts in the body frame only: what the slot matching reads (its world
+/// normal is worldDirection of bodyNormal).
+struct MeshBodyContact
+{
+    Real overlap;    // [m]
+    Vec3 bodyNormal; // unit, body frame, from the surface towards the centre
+};
+/// meshContacts in the body frame (the same contacts, in the same order), without and with a
+/// candidate's triangle list.
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshBodyContact* out);
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     const std::uint32_t* near, std::size_t nearCount, MeshBodyContact* out);
+
 /// The deepest contact of a sphere with the mesh (for single-gap uses: diagnostics, initial
 /// overlap checks). The force stage takes all of them (WallContactList::meshGaps).
 WallGap wallGap(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r);
