@@ -365,12 +365,13 @@ void WallContactList::matchMeshGroup(std::size_t first, const Wall& meshWall, co
         return;
     }
     group.size = kMeshSlots;
-    MeshBodyContact found[kMeshSlots];
+    MeshContactBuffer buffer;
+    const MeshBodyContact* const found = buffer.item;
     const int count = meshTriangleStart.size() == particle.size() + 1
                           ? meshBodyContacts(shape, meshWall.displacement, x, r,
                                              meshTriangles.data() + meshTriangleStart[first],
-                                             meshTriangleStart[first + 1] - meshTriangleStart[first], found)
-                          : meshBodyContacts(shape, meshWall.displacement, x, r, found);
+                                             meshTriangleStart[first + 1] - meshTriangleStart[first], buffer)
+                          : meshBodyContacts(shape, meshWall.displacement, x, r, buffer);
     // (next may be the stored normals themselves: a slot's stored normal is read only while it is
     // not taken, and next is written only for taken slots until the end.)
     const Vec3* stored = meshNormal.data() + first;

@@ -42,13 +42,7 @@ enum Rank : int
     VertexRank = 2
 };
 
-struct Found
-{
-    int rank;
-    std::uint32_t feature; // triangle, edge or vertex id
-    Real overlap;
-    Vec3 normal; // body frame
-};
+using Found = MeshBodyContact;
 
 constexpr Real kVoronoiSlack = 1e-10; // relative: a centre on the boundary of two regions is in both
 constexpr Real kSameNormal = 1e-12;   // 1 - cos of the angle below which two contacts are one
@@ -75,39 +69,6 @@ bool vertexRegion(const TriangleMesh& m, std::uint32_t v, const Vec3& diff, Real
     return true;
 }
 
-constexpr int kMaxFound = 32;
-
-/// Room for kMaxFound contacts, left uninitialised (a Found array would zero its 1.3 KB on every
-/// query; only the entries written are read).
-union FoundBuffer
-{
-    FoundBuffer() {}
-    Found item[kMaxFound];
-};
-
-/// True if triangle t is certainly farther than r [m] from p: a lower bound of the distance,
-/// sqrt(s^2 + o^2) with s the distance from the triangle's plane and o the largest distance of p
-/// outside the three half-planes bounded by its edges (inward normals, in the plane), exceeds r
-/// by more than the bound's rounding (a relative 1e-10 of the lengths involved), so no contact
-/// findContacts would keep is skipped. A few dot products on the triangle's Bound record instead
-/// of closestPointOnTriangle for most listed triangles (those near but not touching); the plane
-/// distance alone decides first when it suffices. With pa = p - v[0], edge e's outside distance
-/// is -(p - v[e]).inward[e]: -pa.inward[e] for edges 0 and 2 (through v[0]), and
-/// -pa.inward[1] - apexHeight for edge 1.
-VERIDEM_HOT_INLINE bool fartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r)
-{
-    const TriangleMesh::Bound& tb = m.bounds[t];
-    const Vec3 pa = p - tb.corner;
-    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z) + tb.apexHeight);
-    const Real reach = (r + margin) * (r + margin);
-    const Real s = dot(pa, tb.normal);
-    if (s * s > reach)
-        return true;
-    const Real o = std::max(
-        {Real(0), -dot(pa, tb.inward[0]), -dot(pa, tb.inward[1]) - tb.apexHeight, -dot(pa, tb.inward[2])});
-    return s * s + o * o > reach;
-}
-
 /// Sorts found[0, count) by `before` (a strict weak order), stable: insertion sort, as count is a
 /// handful (no allocation, unlike std::stable_sort).
 template <class Before> void sortFound(Found* found, int count, Before before)
@@ -124,7 +85,7 @@ template <class Before> void sortFound(Found* found, int count, Before before)
 
 /// Contacts of body-frame point p (radius r [m]) with the triangles `near` (ascending; every
 /// triangle that touches the sphere among them) after elimination, deepest first, into
-/// found[0, kMaxFound): candidates are gathered there, then sorted and merged in place (no copy
+/// found[0, kMaxMeshFound): candidates are gathered there, then sorted and merged in place (no copy
 /// when one contact is found, the common case).
 int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32_t* near,
                  std::size_t nearCount, Found* found)
@@ -133,7 +94,7 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
     for (std::size_t n = 0; n < nearCount; ++n)
     {
         const std::uint32_t t = near[n];
-        if (fartherThan(m, t, p, r))
+        if (triangleFartherThan(m, t, p, r))
             continue;
         const auto& tri = m.triangles[t];
         const TrianglePoint cp =
@@ -145,7 +106,7 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
             Vec3 normal;
             if (!trianglePlaneContact(m, t, p, r, overlap, normal))
                 continue;
-            f = {FaceRank, t, overlap, normal};
+            f = {normal, overlap, FaceRank, t};
         }
         else
         {
@@ -159,20 +120,20 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
                 const std::uint32_t g = m.triangleEdges[t][cp.index];
                 if (!edgeRegion(m, g, diff, d))
                     continue;
-                f = {EdgeRank, g, r - d, normal};
+                f = {normal, r - d, EdgeRank, g};
             }
             else
             {
                 const std::uint32_t v = tri[cp.index];
                 if (!vertexRegion(m, v, diff, d))
                     continue;
-                f = {VertexRank, v, r - d, normal};
+                f = {normal, r - d, VertexRank, v};
             }
         }
         bool duplicate = false;
         for (int q = 0; q < count && !duplicate; ++q)
             duplicate = found[q].rank == f.rank && found[q].feature == f.feature;
-        if (!duplicate && count < kMaxFound)
+        if (!duplicate && count < kMaxMeshFound)
             found[count++] = f;
     }
     if (count <= 1)
@@ -192,7 +153,7 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
     {
         bool merged = false;
         for (int k = 0; k < kept && !merged; ++k)
-            merged = 1 - dot(found[k].normal, found[q].normal) < kSameNormal;
+            merged = 1 - dot(found[k].bodyNormal, found[q].bodyNormal) < kSameNormal;
         if (!merged)
         {
             if (kept != q)
@@ -207,29 +168,20 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
 } // namespace
 
 int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
-                     const std::uint32_t* near, std::size_t nearCount, MeshBodyContact* out)
+                     const std::uint32_t* near, std::size_t nearCount, MeshContactBuffer& found)
 {
-    FoundBuffer buffer;
-    Found* const found = buffer.item;
-    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, near, nearCount, found);
-    const int kept = std::min(count, kMeshSlots);
-    for (int q = 0; q < kept; ++q)
-    {
-        out[q].overlap = found[q].overlap; // (the normal component by component: as matchMeshGroup's copy)
-        out[q].bodyNormal.x = found[q].normal.x;
-        out[q].bodyNormal.y = found[q].normal.y;
-        out[q].bodyNormal.z = found[q].normal.z;
-    }
-    return kept;
+    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, near, nearCount, found.item);
+    return std::min(count, kMeshSlots);
 }
 
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
                  std::size_t nearCount, MeshContact* out)
 {
-    MeshBodyContact body[kMeshSlots];
-    const int kept = meshBodyContacts(shape, offset, x, r, near, nearCount, body);
+    MeshContactBuffer found;
+    const int kept = meshBodyContacts(shape, offset, x, r, near, nearCount, found);
     for (int q = 0; q < kept; ++q)
-        out[q] = {body[q].overlap, worldDirection(shape, body[q].bodyNormal), body[q].bodyNormal};
+        out[q] = {found.item[q].overlap, worldDirection(shape, found.item[q].bodyNormal),
+                  found.item[q].bodyNormal};
     return kept;
 }
 
@@ -248,10 +200,11 @@ const std::vector<std::uint32_t>& gridTriangles(const MeshShape& shape, const Ve
 
 } // namespace
 
-int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshBodyContact* out)
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     MeshContactBuffer& found)
 {
     const std::vector<std::uint32_t>& near = gridTriangles(shape, offset, x, r);
-    return meshBodyContacts(shape, offset, x, r, near.data(), near.size(), out);
+    return meshBodyContacts(shape, offset, x, r, near.data(), near.size(), found);
 }
 
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)

@@ -27,6 +27,7 @@
 #include "core/vec3.h"
 #include "dem/walls/triangle_mesh.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -91,6 +92,29 @@ VERIDEM_HOT_INLINE bool trianglePlaneContact(const TriangleMesh& m, std::uint32_
     return true;
 }
 
+/// True if triangle t is certainly farther than r [m] from the body-frame point p [m]: a lower bound of the
+/// distance, sqrt(s^2 + o^2) with s the distance from the triangle's plane and o the largest distance of p
+/// outside the three half-planes bounded by its edges (inward normals, in the plane), exceeds r
+/// by more than the bound's rounding (a relative 1e-10 of the lengths involved), so no contact
+/// meshContacts would keep is skipped. A few dot products on the triangle's Bound record instead
+/// of closestPointOnTriangle for most listed triangles (those near but not touching); the plane
+/// distance alone decides first when it suffices. With pa = p - v[0], edge e's outside distance
+/// is -(p - v[e]).inward[e]: -pa.inward[e] for edges 0 and 2 (through v[0]), and
+/// -pa.inward[1] - apexHeight for edge 1.
+VERIDEM_HOT_INLINE bool triangleFartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r)
+{
+    const TriangleMesh::Bound& tb = m.bounds[t];
+    const Vec3 pa = p - tb.corner;
+    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z) + tb.apexHeight);
+    const Real reach = (r + margin) * (r + margin);
+    const Real s = dot(pa, tb.normal);
+    if (s * s > reach)
+        return true;
+    const Real o = std::max(
+        {Real(0), -dot(pa, tb.inward[0]), -dot(pa, tb.inward[1]) - tb.apexHeight, -dot(pa, tb.inward[2])});
+    return s * s + o * o > reach;
+}
+
 /// The contacts of a sphere (centre x, radius r [m]) with the mesh after contact elimination
 /// (header comment), deepest first, at most kMeshSlots; returns their number. Looks the
 /// triangles near the sphere up in the mesh's grid.
@@ -101,18 +125,31 @@ int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
                  std::size_t nearCount, MeshContact* out);
 
-/// A contact of meshContacts in the body frame only: what the slot matching reads (its world
-/// normal is worldDirection of bodyNormal).
+/// A contact of meshContacts in the body frame: what the slot matching reads (its world normal is
+/// worldDirection of bodyNormal), and the feature it is with (for the elimination: rank 0 a face,
+/// 1 an edge, 2 a vertex; feature its triangle, edge or vertex id).
 struct MeshBodyContact
 {
-    Real overlap;    // [m]
     Vec3 bodyNormal; // unit, body frame, from the surface towards the centre
+    Real overlap;    // [m]
+    int rank;
+    std::uint32_t feature;
 };
-/// meshContacts in the body frame (the same contacts, in the same order), without and with a
-/// candidate's triangle list.
-int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshBodyContact* out);
+/// Room for the candidate contacts of one query, left uninitialised (an array of MeshBodyContact
+/// would zero its 1.3 KB on every query; only the entries written are read).
+inline constexpr int kMaxMeshFound = 32;
+union MeshContactBuffer
+{
+    MeshContactBuffer() {}
+    MeshBodyContact item[kMaxMeshFound];
+};
+/// meshContacts in the body frame (the same contacts, in the same order, at most kMeshSlots) in
+/// found.item, without and with a candidate's triangle list. (The slot matching reads them where
+/// the query wrote them: a copy read back at once costs store-forwarding stalls.)
 int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
-                     const std::uint32_t* near, std::size_t nearCount, MeshBodyContact* out);
+                     MeshContactBuffer& found);
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     const std::uint32_t* near, std::size_t nearCount, MeshContactBuffer& found);
 
 /// The deepest contact of a sphere with the mesh (for single-gap uses: diagnostics, initial
 /// overlap checks). The force stage takes all of them (WallContactList::meshGaps).
