@@ -102,9 +102,9 @@ class WallContactList
     /// The contacts of one (particle, mesh wall) candidate matched to its slots, for a loop over
     /// slots: `first` is the group's first slot; bit q of `touching` marks slot first + q as
     /// touching with gap[q] (the other gaps are not set), bit q of `fresh` a slot taken over by a
-    /// new contact (its history must be forgotten before use). (Masks, not flags per slot: the
-    /// force pass reads back what the matching just wrote, and a few wide stores of zeroed flags
-    /// read back a byte at a time stall store-to-load forwarding.)
+    /// new contact (its history must be forgotten before use). (Masks, not per-slot flags and gaps
+    /// zeroed for every group: the force pass reads back at once what the matching wrote, and
+    /// fewer, same-width stores keep that read from stalling store-to-load forwarding.)
     struct MeshGroup
     {
         std::size_t first = ~std::size_t(0), size = 0; // size: 1 (flat) or kMeshSlots
@@ -116,6 +116,13 @@ class WallContactList
     /// The gap of slot k of a mesh wall for the sphere (x, r [m]); matches the group's contacts to
     /// its slots (and updates meshNormal) when k is in a group other than `group`'s.
     WallGap meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group);
+    /// meshSlotGap for a loop that takes a general group whole: matches the contacts of the group
+    /// whose first slot is `first` to its slots and updates meshNormal (group.gap, group.touching,
+    /// group.fresh then give each slot's).
+    void matchMeshGroupAt(std::size_t first, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group)
+    {
+        matchMeshGroup(first, meshWall, x, r, group, meshNormal.data() + first);
+    }
     /// The same without updating meshNormal (after the force stage: the same assignment), for
     /// passes that only read the contacts (contact_diagnostics.cpp).
     WallGap meshSlotGapAsStored(std::size_t k, const Wall& meshWall, const Vec3& x, Real r) const;

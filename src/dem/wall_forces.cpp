@@ -382,9 +382,10 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         if constexpr (kMeshes)
             if (frame.mesh && list.meshFlat[k] == WallContactList::kNotFlat)
             {
-                // A general mesh group: its contacts matched once (meshSlotGap), then its slots
-                // from k on in order, as slotGap hands them out one at a time.
-                world.wallContacts.meshSlotGap(k, world.walls[wallOf[k]], x, r, *group);
+                // A general mesh group, entered at its first slot (the loop starts at a particle's
+                // first slot and steps over whole groups, which do not straddle particles): its
+                // contacts matched once, then its slots in order, as slotGap hands them out.
+                world.wallContacts.matchMeshGroupAt(k, world.walls[wallOf[k]], x, r, *group);
                 const std::size_t groupEnd = group->first + group->size;
                 for (; k < groupEnd; ++k)
                 {

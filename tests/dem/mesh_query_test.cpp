@@ -96,18 +96,21 @@ TEST(MeshQuery, FartherThanIsALowerBoundOfTheDistanceAndExactOverTheFaceAndEdges
             for (const Real factor : {0.5, 0.999, 1 - 1e-9, 1 + 1e-9, 1.001, 2.0})
             {
                 const Real r = factor * distance;
-                if (triangleFartherThan(m, static_cast<std::uint32_t>(t), p, r))
+                Real s;
+                if (triangleFartherThan(m, static_cast<std::uint32_t>(t), p, r, s))
                 {
                     ++skipped;
                     EXPECT_GT(distance, r) << "triangle " << t << " trial " << trial;
                 }
+                EXPECT_EQ(s, dot(p - a, m.normals[t])); // (the signed plane distance, the same bits)
             }
             // Over the face or an edge the bound is the distance itself (the plane distance, and
             // across an edge the distance from its line), so it decides 1e-8 m (above its margin,
             // 1e-10 of lengths of ~1 m, and the round-off of coordinates of 100 m) below it.
             if (closest.feature != MeshFeature::Vertex && distance > 1e-6)
             {
-                EXPECT_TRUE(triangleFartherThan(m, static_cast<std::uint32_t>(t), p, distance - 1e-8))
+                Real s;
+                EXPECT_TRUE(triangleFartherThan(m, static_cast<std::uint32_t>(t), p, distance - 1e-8, s))
                     << "triangle " << t << " trial " << trial;
                 ++tight;
             }

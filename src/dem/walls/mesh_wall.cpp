@@ -94,7 +94,8 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
     for (std::size_t n = 0; n < nearCount; ++n)
     {
         const std::uint32_t t = near[n];
-        if (triangleFartherThan(m, t, p, r))
+        Real planeDistance;
+        if (triangleFartherThan(m, t, p, r, planeDistance))
             continue;
         const auto& tri = m.triangles[t];
         const TrianglePoint cp =
@@ -104,7 +105,7 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
         {
             Real overlap;
             Vec3 normal;
-            if (!trianglePlaneContact(m, t, p, r, overlap, normal))
+            if (!signedPlaneContact(planeDistance, m.bounds[t].normal, r, overlap, normal))
                 continue;
             f = {normal, overlap, FaceRank, t};
         }
