@@ -3,8 +3,11 @@
 // or one at a time through the general law, with the same bits. A wall contact's frame: the gap of
 // the wall's shape (wallGap, dem/walls/wall.h) and wallContactFrame (dem/contact_frame.h: the lever
 // arm, the contact-point velocity against the wall's surface velocity at the half step). Passes:
-// planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap), any
-// walls in lanes (frames once per call), and the scalar path; the same bits from each.
+// planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap; a
+// general mesh group is matched once at its first slot, matchMeshGroupAt), any walls in lanes
+// (frames once per call), and the scalar path; the same bits from each. (Above 500 lines: the
+// three passes and the always-inlined helpers they share are one stage, compiled into each
+// instruction-set variant here; a split would move the helpers to a private header.)
 #include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 #include "dem/exec/law_batch.h"
