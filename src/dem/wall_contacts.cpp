@@ -339,84 +339,103 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
     meshTriangles.clear();
 }
 
-std::size_t WallContactList::matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
-                                            MeshGroup& group, Vec3* next) const
+std::size_t WallContactList::meshGroupFirst(std::size_t k) const
 {
-    const MeshShape& shape = std::get<MeshShape>(meshWall.shape);
-    for (int q = 0; q < kMeshSlots; ++q)
-    {
-        group.gap[q] = WallGap{};
-        group.fresh[q] = false;
-        next[q] = Vec3{};
-    }
     if (meshFlat[k] != kNotFlat)
-    {
-        group.first = k;
-        group.size = 1;
-        group.gap[0] = flatSlotGap(k, shape, meshWall.displacement, x, r, next[0], group.fresh[0]);
         return k;
-    }
     std::size_t first = k;
     while (first > 0 && k - first < kMeshSlots - 1 && particle[first - 1] == particle[k] &&
            wall[first - 1] == wall[k])
         --first;
+    return first;
+}
+
+void WallContactList::matchMeshGroup(std::size_t first, const Wall& meshWall, const Vec3& x, Real r,
+                                     MeshGroup& group, Vec3* next) const
+{
+    const MeshShape& shape = std::get<MeshShape>(meshWall.shape);
     group.first = first;
-    group.size = kMeshSlots;
-    MeshContact found[kMeshSlots];
-    const int count = meshTriangleStart.size() == particle.size() + 1
-                          ? meshContacts(shape, meshWall.displacement, x, r,
-                                         meshTriangles.data() + meshTriangleStart[first],
-                                         meshTriangleStart[first + 1] - meshTriangleStart[first], found)
-                          : meshContacts(shape, meshWall.displacement, x, r, found);
-    const Vec3* stored = meshNormal.data() + first;
-    bool taken[kMeshSlots] = {};
-    for (int c = 0; c < count; ++c) // deepest first
+    if (meshFlat[first] != kNotFlat)
     {
+        bool fresh;
+        group.size = 1;
+        group.gap[0] = flatSlotGap(first, shape, meshWall.displacement, x, r, next[0], fresh);
+        group.touching = group.gap[0].touching ? 1u : 0u;
+        group.fresh = fresh ? 1u : 0u;
+        return;
+    }
+    group.size = kMeshSlots;
+    MeshContactBuffer buffer;
+    const MeshBodyContact* const found = buffer.item;
+    const int count = meshTriangleStart.size() == particle.size() + 1
+                          ? meshBodyContacts(shape, meshWall.displacement, x, r,
+                                             meshTriangles.data() + meshTriangleStart[first],
+                                             meshTriangleStart[first + 1] - meshTriangleStart[first], buffer)
+                          : meshBodyContacts(shape, meshWall.displacement, x, r, buffer);
+    // (next may be the stored normals themselves: a slot's stored normal is read only while it is
+    // not taken, and next is written only for taken slots until the end.)
+    const Vec3* stored = meshNormal.data() + first;
+    std::uint32_t taken = 0, fresh = 0; // bit q: slot first + q
+    for (int c = 0; c < count; ++c)     // deepest first
+    {
+        const Vec3& normal = found[c].bodyNormal;
         int best = -1;
         Real bestCos = 0.5; // a contact keeps its slot while its normal turns by < 60 degrees
         for (int q = 0; q < kMeshSlots; ++q)
-            if (!taken[q] && dot(stored[q], found[c].bodyNormal) > bestCos)
+            if (!(taken >> q & 1u) && dot(stored[q], normal) > bestCos)
             {
                 best = q;
-                bestCos = dot(stored[q], found[c].bodyNormal);
+                bestCos = dot(stored[q], normal);
             }
         if (best < 0) // a new contact: an empty slot, else one whose contact has gone (fresh)
         {
             for (int q = 0; q < kMeshSlots && best < 0; ++q)
-                if (!taken[q] && lengthSquared(stored[q]) == 0)
+                if (!(taken >> q & 1u) && lengthSquared(stored[q]) == 0)
                     best = q;
             for (int q = 0; q < kMeshSlots && best < 0; ++q)
-                if (!taken[q])
+                if (!(taken >> q & 1u))
                     best = q;
-            group.fresh[best] = lengthSquared(stored[best]) > 0;
+            if (lengthSquared(stored[best]) > 0)
+                fresh |= 1u << best;
         }
-        taken[best] = true;
-        next[best] = found[c].bodyNormal;
-        group.gap[best] = {true, found[c].overlap, found[c].normal, r};
+        taken |= 1u << best;
+        WallGap& gap = group.gap[best];
+        gap.touching = true;
+        gap.overlap = found[c].overlap;
+        gap.normal = worldDirection(shape, normal);
+        gap.effectiveRadius = r;
+        // (Component by component: a block copy's wide loads would straddle the narrower stores
+        // that just wrote the normal and stall store-to-load forwarding.)
+        next[best].x = normal.x;
+        next[best].y = normal.y;
+        next[best].z = normal.z;
     }
-    return first;
+    for (int q = 0; q < kMeshSlots; ++q)
+        if (!(taken >> q & 1u))
+            next[q].x = next[q].y = next[q].z = 0;
+    group.touching = taken;
+    group.fresh = fresh;
 }
 
-const WallGap& WallContactList::meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
-                                            MeshGroup& group)
+WallGap WallContactList::meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r,
+                                     MeshGroup& group)
 {
     if (group.first == ~std::size_t(0) || k < group.first || k >= group.first + group.size ||
         particle[group.first] != particle[k] || wall[group.first] != wall[k])
     {
-        Vec3 next[kMeshSlots];
-        const std::size_t first = matchMeshGroup(k, meshWall, x, r, group, next);
-        for (std::size_t q = 0; q < group.size; ++q)
-            meshNormal[first + q] = next[q];
+        const std::size_t first = meshGroupFirst(k);
+        matchMeshGroup(first, meshWall, x, r, group, meshNormal.data() + first);
     }
-    return group.gap[k - group.first];
+    return group.gapOf(k - group.first);
 }
 
 WallGap WallContactList::meshSlotGapAsStored(std::size_t k, const Wall& meshWall, const Vec3& x, Real r) const
 {
     MeshGroup group;
     Vec3 next[kMeshSlots];
-    const std::size_t first = matchMeshGroup(k, meshWall, x, r, group, next);
-    return group.gap[k - first];
+    const std::size_t first = meshGroupFirst(k);
+    matchMeshGroup(first, meshWall, x, r, group, next);
+    return group.gapOf(k - first);
 }
 
 std::size_t WallContactList::slotOf(std::uint32_t particleIndex, std::uint32_t wallIndex) const

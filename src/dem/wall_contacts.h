@@ -100,17 +100,29 @@ class WallContactList
     }
 
     /// The contacts of one (particle, mesh wall) candidate matched to its slots, for a loop over
-    /// slots: `first` is the group's first slot; `fresh` marks a slot taken over by a new contact
-    /// (its history must be forgotten before use).
+    /// slots: `first` is the group's first slot; bit q of `touching` marks slot first + q as
+    /// touching with gap[q] (the other gaps are not set), bit q of `fresh` a slot taken over by a
+    /// new contact (its history must be forgotten before use). (Masks, not per-slot flags and gaps
+    /// zeroed for every group: the force pass reads back at once what the matching wrote, and
+    /// fewer, same-width stores keep that read from stalling store-to-load forwarding.)
     struct MeshGroup
     {
         std::size_t first = ~std::size_t(0), size = 0; // size: 1 (flat) or kMeshSlots
         WallGap gap[kMeshSlots];
-        bool fresh[kMeshSlots] = {};
+        std::uint32_t touching = 0, fresh = 0;
+        bool isFresh(std::size_t q) const { return (fresh >> q) & 1u; }
+        WallGap gapOf(std::size_t q) const { return (touching >> q) & 1u ? gap[q] : WallGap{}; }
     };
     /// The gap of slot k of a mesh wall for the sphere (x, r [m]); matches the group's contacts to
     /// its slots (and updates meshNormal) when k is in a group other than `group`'s.
-    const WallGap& meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group);
+    WallGap meshSlotGap(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group);
+    /// meshSlotGap for a loop that takes a general group whole: matches the contacts of the group
+    /// whose first slot is `first` to its slots and updates meshNormal (group.gap, group.touching,
+    /// group.fresh then give each slot's).
+    void matchMeshGroupAt(std::size_t first, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group)
+    {
+        matchMeshGroup(first, meshWall, x, r, group, meshNormal.data() + first);
+    }
     /// The same without updating meshNormal (after the force stage: the same assignment), for
     /// passes that only read the contacts (contact_diagnostics.cpp).
     WallGap meshSlotGapAsStored(std::size_t k, const Wall& meshWall, const Vec3& x, Real r) const;
@@ -164,11 +176,14 @@ class WallContactList
     std::vector<Vec3> wallDisplacementAtBuild_;
     std::vector<std::uint8_t> wallActiveAtBuild_;
     std::vector<Real> wallTurnAtBuild_; // mesh walls' accumulated rotation [rad]; empty without meshes
-    /// Matches the contacts of the (particle, mesh wall) group holding slot k to its slots against
-    /// the stored normals: fills `group` and the slots' new normals `next` (group.size); returns
-    /// the group's first slot. A flat group's one contact is its plane's (flatSlotGap).
-    std::size_t matchMeshGroup(std::size_t k, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group,
-                               Vec3* next) const;
+    /// The first slot of the (particle, mesh wall) group holding slot k.
+    std::size_t meshGroupFirst(std::size_t k) const;
+    /// Matches the contacts of the (particle, mesh wall) group whose first slot is `first` to its
+    /// slots against the stored normals: fills `group` and the slots' new normals next[0,
+    /// group.size), which may be the stored normals (meshNormal + first) themselves, updated in
+    /// place. A flat group's one contact is its plane's (flatSlotGap).
+    void matchMeshGroup(std::size_t first, const Wall& meshWall, const Vec3& x, Real r, MeshGroup& group,
+                        Vec3* next) const;
 };
 
 /// The load of wall w on the particles' side: the total force ON the wall [N] (minus the sum of

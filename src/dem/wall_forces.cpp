@@ -3,8 +3,11 @@
 // or one at a time through the general law, with the same bits. A wall contact's frame: the gap of
 // the wall's shape (wallGap, dem/walls/wall.h) and wallContactFrame (dem/contact_frame.h: the lever
 // arm, the contact-point velocity against the wall's surface velocity at the half step). Passes:
-// planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap), any
-// walls in lanes (frames once per call), and the scalar path; the same bits from each.
+// planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap; a
+// general mesh group is matched once at its first slot, matchMeshGroupAt), any walls in lanes
+// (frames once per call), and the scalar path; the same bits from each. (Above 500 lines: the
+// three passes and the always-inlined helpers they share are one stage, compiled into each
+// instruction-set variant here; a split would move the helpers to a private header.)
 #include "dem/contact_frame.h"
 #include "dem/contact_law.h"
 #include "dem/exec/law_batch.h"
@@ -49,7 +52,7 @@ VERIDEM_HOT_INLINE WallGap slotGap(WallContactList& list, std::size_t k, const W
     if (!group)
         group.emplace();
     const WallGap gap = list.meshSlotGap(k, wall, x, r, *group);
-    if (group->fresh[k - group->first])
+    if (group->isFresh(k - group->first))
         history.forget(k);
     return gap;
 }
@@ -266,23 +269,18 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames, bo
     }
 }
 
-/// The gap of mesh slot k in the plane-wall pass, as wallForcesInLanes takes it: a flat slot's
-/// plane (forgetting a replaced contact's history), else the contact matched to the slot.
+/// The gap of flat mesh slot k in the plane-wall pass, as wallForcesInLanes takes it: its plane
+/// (forgetting a replaced contact's history). (A general group is matched whole in the pass.)
 VERIDEM_HOT_INLINE WallGap meshSlotGapInPass(World& world, std::size_t k, const MeshShape& shape,
-                                             const Vec3& x, Real r,
-                                             std::optional<WallContactList::MeshGroup>& group)
+                                             const Vec3& x, Real r)
 {
     WallContactList& list = world.wallContacts;
-    if (list.meshFlat[k] != WallContactList::kNotFlat)
-    {
-        bool fresh;
-        const WallGap gap = list.flatSlotGap(k, shape, world.walls[list.wall[k]].displacement, x, r,
-                                             list.meshNormal[k], fresh);
-        if (fresh)
-            world.wallHistory.forget(k);
-        return gap;
-    }
-    return slotGap(list, k, world.walls[list.wall[k]], x, r, group, world.wallHistory);
+    bool fresh;
+    const WallGap gap =
+        list.flatSlotGap(k, shape, world.walls[list.wall[k]].displacement, x, r, list.meshNormal[k], fresh);
+    if (fresh)
+        world.wallHistory.forget(k);
+    return gap;
 }
 
 /// wallForcesInLanes for plane walls (frames from planeFrames): the same gap (wallGap of the plane's
@@ -316,7 +314,9 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     const bool rolling = history.keepRolling;
     const bool loads = list.recordLoads;
     const Real halfStep = 0.5 * dt;
-    std::optional<WallContactList::MeshGroup> group; // (kMeshes: made on the first general mesh slot)
+    std::optional<WallContactList::MeshGroup> group; // (kMeshes only: the general mesh group at hand)
+    if constexpr (kMeshes)
+        group.emplace();
     LawBatch b;
     std::size_t m = 0;
     // (Inlined: a lambda's own function would not have the caller's instruction set.)
@@ -355,24 +355,17 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         m = 0;
         b.models = 0;
     };
-    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    // Slot k of particle i (at x, radius r) against the wall of `frame` with gap `gap`: into the
+    // batch if touching, else its history cleared.
+    const auto add = [&](std::size_t k, std::uint32_t i, const Vec3& x, Real r, const PlaneFrame& frame,
+                         const WallGap& gap) VERIDEM_INLINE_LAMBDA
     {
-        const std::uint32_t i = particle[k];
-        const PlaneFrame& frame = frames[wallOf[k]];
-        const Vec3 x = position[i];
-        const Real r = radius[i];
-        WallGap gap;
-        if constexpr (kMeshes)
-            gap = frame.mesh ? meshSlotGapInPass(world, k, *frame.mesh, x, r, group)
-                             : wallGap(frame.geometry, x, r);
-        else
-            gap = wallGap(frame.geometry, x, r);
         if (!gap.touching)
         {
             spring[k] = Vec3{};
             if (rolling)
                 history.forget(k);
-            continue;
+            return;
         }
         ++health.touching;
         const ContactFrameOf<Real> contact = wallContactFrame(gap.normal, gap.overlap, x, velocity[i],
@@ -382,6 +375,40 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
             addContactLaw(b, m, world.pairs(p.material[i], frame.material));
         if (++m == kBatch)
             run();
+    };
+    for (std::size_t k = list.start[begin]; k < list.start[end]; ++k)
+    {
+        const std::uint32_t i = particle[k];
+        const PlaneFrame& frame = frames[wallOf[k]];
+        const Vec3 x = position[i];
+        const Real r = radius[i];
+        if constexpr (kMeshes)
+            if (frame.mesh && list.meshFlat[k] == WallContactList::kNotFlat)
+            {
+                // A general mesh group, entered at its first slot (the loop starts at a particle's
+                // first slot and steps over whole groups, which do not straddle particles): its
+                // contacts matched once, then its slots in order, as slotGap hands them out.
+                world.wallContacts.matchMeshGroupAt(k, world.walls[wallOf[k]], x, r, *group);
+                const std::size_t groupEnd = group->first + group->size;
+                for (; k < groupEnd; ++k)
+                {
+                    const std::size_t q = k - group->first;
+                    if (group->isFresh(q))
+                        history.forget(k);
+                    if (group->touching >> q & 1u)
+                        add(k, i, x, r, frame, group->gap[q]);
+                    else
+                        add(k, i, x, r, frame, WallGap{});
+                }
+                --k; // (the loop's ++k moves on to the next candidate)
+                continue;
+            }
+        WallGap gap;
+        if constexpr (kMeshes)
+            gap = frame.mesh ? meshSlotGapInPass(world, k, *frame.mesh, x, r) : wallGap(frame.geometry, x, r);
+        else
+            gap = wallGap(frame.geometry, x, r);
+        add(k, i, x, r, frame, gap);
     }
     if (m > 0)
         run();

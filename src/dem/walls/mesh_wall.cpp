@@ -42,13 +42,7 @@ enum Rank : int
     VertexRank = 2
 };
 
-struct Found
-{
-    int rank;
-    std::uint32_t feature; // triangle, edge or vertex id
-    Real overlap;
-    Vec3 normal; // body frame
-};
+using Found = MeshBodyContact;
 
 constexpr Real kVoronoiSlack = 1e-10; // relative: a centre on the boundary of two regions is in both
 constexpr Real kSameNormal = 1e-12;   // 1 - cos of the angle below which two contacts are one
@@ -75,34 +69,6 @@ bool vertexRegion(const TriangleMesh& m, std::uint32_t v, const Vec3& diff, Real
     return true;
 }
 
-constexpr int kMaxFound = 32;
-
-/// Room for kMaxFound contacts, left uninitialised (a Found array would zero its 1.3 KB on every
-/// query; only the entries written are read).
-union FoundBuffer
-{
-    FoundBuffer() {}
-    Found item[kMaxFound];
-};
-
-/// True if triangle t is certainly farther than r [m] from p: a lower bound of the distance,
-/// sqrt(s^2 + o^2) with s the distance from the triangle's plane and o the largest distance of p
-/// outside the three half-planes bounded by its edges (inward normals, in the plane), exceeds r
-/// by more than the bound's rounding (a relative 1e-10 of the lengths involved), so no contact
-/// findContacts would keep is skipped. A few dot products instead of closestPointOnTriangle for
-/// most listed triangles (those near but not touching).
-bool fartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r)
-{
-    const auto& tri = m.triangles[t];
-    const auto& in = m.inward[t];
-    const Vec3 pa = p - m.vertices[tri[0]];
-    const Real s = dot(pa, m.normals[t]);
-    const Real o = std::max(
-        {Real(0), -dot(pa, in[0]), -dot(p - m.vertices[tri[1]], in[1]), -dot(p - m.vertices[tri[2]], in[2])});
-    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z));
-    return s * s + o * o > (r + margin) * (r + margin);
-}
-
 /// Sorts found[0, count) by `before` (a strict weak order), stable: insertion sort, as count is a
 /// handful (no allocation, unlike std::stable_sort).
 template <class Before> void sortFound(Found* found, int count, Before before)
@@ -118,29 +84,30 @@ template <class Before> void sortFound(Found* found, int count, Before before)
 }
 
 /// Contacts of body-frame point p (radius r [m]) with the triangles `near` (ascending; every
-/// triangle that touches the sphere among them) after elimination, deepest first.
+/// triangle that touches the sphere among them) after elimination, deepest first, into
+/// found[0, kMaxMeshFound): candidates are gathered there, then sorted and merged in place (no copy
+/// when one contact is found, the common case).
 int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32_t* near,
-                 std::size_t nearCount, Found* out)
+                 std::size_t nearCount, Found* found)
 {
-    FoundBuffer buffer;
-    Found* const found = buffer.item;
     int count = 0;
     for (std::size_t n = 0; n < nearCount; ++n)
     {
         const std::uint32_t t = near[n];
-        const auto& tri = m.triangles[t];
-        const Vec3& a = m.vertices[tri[0]];
-        if (fartherThan(m, t, p, r))
+        Real planeDistance;
+        if (triangleFartherThan(m, t, p, r, planeDistance))
             continue;
-        const TrianglePoint cp = closestPointOnTriangle(p, a, m.vertices[tri[1]], m.vertices[tri[2]]);
+        const auto& tri = m.triangles[t];
+        const TrianglePoint cp =
+            closestPointOnTriangle(p, m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
         Found f;
         if (cp.feature == MeshFeature::Face)
         {
             Real overlap;
             Vec3 normal;
-            if (!trianglePlaneContact(m, t, p, r, overlap, normal))
+            if (!signedPlaneContact(planeDistance, m.bounds[t].normal, r, overlap, normal))
                 continue;
-            f = {FaceRank, t, overlap, normal};
+            f = {normal, overlap, FaceRank, t};
         }
         else
         {
@@ -154,22 +121,24 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
                 const std::uint32_t g = m.triangleEdges[t][cp.index];
                 if (!edgeRegion(m, g, diff, d))
                     continue;
-                f = {EdgeRank, g, r - d, normal};
+                f = {normal, r - d, EdgeRank, g};
             }
             else
             {
                 const std::uint32_t v = tri[cp.index];
                 if (!vertexRegion(m, v, diff, d))
                     continue;
-                f = {VertexRank, v, r - d, normal};
+                f = {normal, r - d, VertexRank, v};
             }
         }
         bool duplicate = false;
         for (int q = 0; q < count && !duplicate; ++q)
             duplicate = found[q].rank == f.rank && found[q].feature == f.feature;
-        if (!duplicate && count < kMaxFound)
+        if (!duplicate && count < kMaxMeshFound)
             found[count++] = f;
     }
+    if (count <= 1)
+        return count;
     // Faces first, then deeper, then by id (a deterministic order), and merge equal normals.
     sortFound(found, count,
               [](const Found& x, const Found& y)
@@ -185,33 +154,63 @@ int findContacts(const TriangleMesh& m, const Vec3& p, Real r, const std::uint32
     {
         bool merged = false;
         for (int k = 0; k < kept && !merged; ++k)
-            merged = 1 - dot(out[k].normal, found[q].normal) < kSameNormal;
+            merged = 1 - dot(found[k].bodyNormal, found[q].bodyNormal) < kSameNormal;
         if (!merged)
-            out[kept++] = found[q];
+        {
+            if (kept != q)
+                found[kept] = found[q];
+            ++kept;
+        }
     }
-    sortFound(out, kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
+    sortFound(found, kept, [](const Found& x, const Found& y) { return x.overlap > y.overlap; });
     return kept;
 }
 
 } // namespace
 
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     const std::uint32_t* near, std::size_t nearCount, MeshContactBuffer& found)
+{
+    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, near, nearCount, found.item);
+    return std::min(count, kMeshSlots);
+}
+
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
                  std::size_t nearCount, MeshContact* out)
 {
-    FoundBuffer buffer;
-    Found* const found = buffer.item;
-    const int count = findContacts(*shape.mesh, bodyPoint(shape, offset, x), r, near, nearCount, found);
-    const int kept = std::min(count, kMeshSlots);
+    MeshContactBuffer found;
+    const int kept = meshBodyContacts(shape, offset, x, r, near, nearCount, found);
     for (int q = 0; q < kept; ++q)
-        out[q] = {found[q].overlap, worldDirection(shape, found[q].normal), found[q].normal};
+        out[q] = {found.item[q].overlap, worldDirection(shape, found.item[q].bodyNormal),
+                  found.item[q].bodyNormal};
     return kept;
 }
 
-int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+namespace
+{
+
+/// The triangles whose grid cells meet the sphere's box (all that can touch it).
+const std::vector<std::uint32_t>& gridTriangles(const MeshShape& shape, const Vec3& offset, const Vec3& x,
+                                                Real r)
 {
     thread_local std::vector<std::uint32_t> near;
     const Vec3 p = bodyPoint(shape, offset, x), span{r, r, r};
     shape.mesh->trianglesNear(p - span, p + span, near);
+    return near;
+}
+
+} // namespace
+
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     MeshContactBuffer& found)
+{
+    const std::vector<std::uint32_t>& near = gridTriangles(shape, offset, x, r);
+    return meshBodyContacts(shape, offset, x, r, near.data(), near.size(), found);
+}
+
+int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, MeshContact* out)
+{
+    const std::vector<std::uint32_t>& near = gridTriangles(shape, offset, x, r);
     return meshContacts(shape, offset, x, r, near.data(), near.size(), out);
 }
 

@@ -27,6 +27,7 @@
 #include "core/vec3.h"
 #include "dem/walls/triangle_mesh.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -74,21 +75,55 @@ struct MeshContact
     Vec3 bodyNormal; // the same in the body frame
 };
 
-/// The contact of the body-frame point p (a sphere's centre, radius r [m]) with the plane of
-/// triangle t, from either side: the signed distance s = (p - a).n from its first corner a along
-/// its normal n gives the overlap r - |s| [m] and the body-frame normal sign(s) n (n if s = 0).
-/// False if |s| >= r. A face contact of meshContacts, and the whole contact of a flat candidate
-/// (meshPatchFlat).
-VERIDEM_HOT_INLINE bool trianglePlaneContact(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r,
-                                             Real& overlap, Vec3& bodyNormal)
+/// The contact of a sphere of radius r [m] whose centre is at signed distance s [m] along the
+/// unit normal n from a plane, from either side: the overlap r - |s| [m] and the normal sign(s) n
+/// (n if s = 0). False if |s| >= r.
+VERIDEM_HOT_INLINE bool signedPlaneContact(Real s, const Vec3& n, Real r, Real& overlap, Vec3& normal)
 {
-    const Real s = dot(p - m.vertices[m.triangles[t][0]], m.normals[t]);
     const Real d = std::fabs(s);
     if (!(d < r))
         return false;
     overlap = r - d;
-    bodyNormal = s < 0 ? -m.normals[t] : m.normals[t];
+    normal = s < 0 ? -n : n;
     return true;
+}
+
+/// The contact of the body-frame point p (a sphere's centre, radius r [m]) with the plane of
+/// triangle t: signedPlaneContact at s = (p - a).n, with a its first corner and n its normal
+/// (the body-frame normal). A face contact of meshContacts (which takes s from
+/// triangleFartherThan: the same operations on the same values), and the whole contact of a
+/// flat candidate (meshPatchFlat).
+VERIDEM_HOT_INLINE bool trianglePlaneContact(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r,
+                                             Real& overlap, Vec3& bodyNormal)
+{
+    return signedPlaneContact(dot(p - m.vertices[m.triangles[t][0]], m.normals[t]), m.normals[t], r, overlap,
+                              bodyNormal);
+}
+
+/// True if triangle t is certainly farther than r [m] from the body-frame point p [m]: a lower
+/// bound of the distance, sqrt(s^2 + o^2) with s the distance from the triangle's plane and o the
+/// largest distance of p outside the three half-planes bounded by its edges (inward normals, in
+/// the plane), exceeds r by more than the bound's rounding (a relative 1e-10 of the lengths
+/// involved), so no contact meshContacts would keep is skipped. A few dot products on the
+/// triangle's Bound record instead of closestPointOnTriangle for most listed triangles (those
+/// near but not touching); the plane distance alone decides first when it suffices. With
+/// pa = p - v[0], edge e's outside distance is -(p - v[e]).inward[e]: -pa.inward[e] for edges 0
+/// and 2 (through v[0]), and -pa.inward[1] - apexHeight for edge 1. Sets planeDistance to the
+/// signed s = pa.n [m].
+VERIDEM_HOT_INLINE bool triangleFartherThan(const TriangleMesh& m, std::uint32_t t, const Vec3& p, Real r,
+                                            Real& planeDistance)
+{
+    const TriangleMesh::Bound& tb = m.bounds[t];
+    const Vec3 pa = p - tb.corner;
+    const Real margin = 1e-10 * (r + std::fabs(pa.x) + std::fabs(pa.y) + std::fabs(pa.z) + tb.apexHeight);
+    const Real reach = (r + margin) * (r + margin);
+    const Real s = dot(pa, tb.normal);
+    planeDistance = s;
+    if (s * s > reach)
+        return true;
+    const Real o = std::max(
+        {Real(0), -dot(pa, tb.inward[0]), -dot(pa, tb.inward[1]) - tb.apexHeight, -dot(pa, tb.inward[2])});
+    return s * s + o * o > reach;
 }
 
 /// The contacts of a sphere (centre x, radius r [m]) with the mesh after contact elimination
@@ -100,6 +135,32 @@ int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real
 /// motion stays within the reach it was made with): the same contacts, without the grid lookup.
 int meshContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r, const std::uint32_t* near,
                  std::size_t nearCount, MeshContact* out);
+
+/// A contact of meshContacts in the body frame: what the slot matching reads (its world normal is
+/// worldDirection of bodyNormal), and the feature it is with (for the elimination: rank 0 a face,
+/// 1 an edge, 2 a vertex; feature its triangle, edge or vertex id).
+struct MeshBodyContact
+{
+    Vec3 bodyNormal; // unit, body frame, from the surface towards the centre
+    Real overlap;    // [m]
+    int rank;
+    std::uint32_t feature;
+};
+/// Room for the candidate contacts of one query, left uninitialised (an array of MeshBodyContact
+/// would zero its 1.3 KB on every query; only the entries written are read).
+inline constexpr int kMaxMeshFound = 32;
+union MeshContactBuffer
+{
+    MeshContactBuffer() {}
+    MeshBodyContact item[kMaxMeshFound];
+};
+/// meshContacts in the body frame (the same contacts, in the same order, at most kMeshSlots) in
+/// found.item, without and with a candidate's triangle list. (The slot matching reads them where
+/// the query wrote them: a copy read back at once costs store-forwarding stalls.)
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     MeshContactBuffer& found);
+int meshBodyContacts(const MeshShape& shape, const Vec3& offset, const Vec3& x, Real r,
+                     const std::uint32_t* near, std::size_t nearCount, MeshContactBuffer& found);
 
 /// The deepest contact of a sphere with the mesh (for single-gap uses: diagnostics, initial
 /// overlap checks). The force stage takes all of them (WallContactList::meshGaps).

@@ -205,6 +205,12 @@ TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::stri
             const Vec3 u = (b - a) / length(b - a);
             m.inward[t][e] = normalizedOrZero((w - a) - dot(w - a, u) * u);
         }
+    m.bounds.resize(m.triangles.size());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    {
+        const Vec3& a = m.vertices[m.triangles[t][0]];
+        m.bounds[t] = {a, m.normals[t], m.inward[t], dot(a - m.vertices[m.triangles[t][1]], m.inward[t][1])};
+    }
     buildEdges(m);
     std::size_t open = 0, nonManifold = 0, example = 0;
     for (std::size_t g = 0; g < m.edges.size(); ++g)
@@ -270,8 +276,8 @@ std::size_t TriangleMesh::memoryBytes() const
 {
     auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
     return bytes(vertices) + bytes(triangles) + bytes(normals) + bytes(triangleEdges) + bytes(inward) +
-           bytes(edges) + bytes(edgeStart) + bytes(edgeUsers) + bytes(vertexStart) + bytes(vertexNeighbours) +
-           bytes(cellStart) + bytes(cellTriangles);
+           bytes(bounds) + bytes(edges) + bytes(edgeStart) + bytes(edgeUsers) + bytes(vertexStart) +
+           bytes(vertexNeighbours) + bytes(cellStart) + bytes(cellTriangles);
 }
 
 TrianglePoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)

@@ -28,6 +28,19 @@ class TriangleMesh
     // Per triangle and local edge e: the unit direction in the triangle's plane, perpendicular to
     // the edge, pointing into the triangle.
     std::vector<std::array<Vec3, 3>> inward;
+    // Per triangle, what the contact query's distance lower bound reads (triangleFartherThan in
+    // mesh_wall.h), copied from the arrays above into one 128-byte record so the bound takes one
+    // direct load instead of the vertex indices, three vertices, the normal and the inward
+    // directions from five arrays: corner v[0] [m], unit normal, the inward directions of edges
+    // 0-2, and apexHeight = (v[0] - v[1]).inward[1], the distance [m] of v[0] from edge 1's line
+    // (edges 0 and 2 pass through v[0]).
+    struct alignas(64) Bound
+    {
+        Vec3 corner, normal;
+        std::array<Vec3, 3> inward;
+        Real apexHeight;
+    };
+    std::vector<Bound> bounds;
     // Edges (unique vertex pairs) with the triangles that use them: edge g's users are
     // edgeUsers[edgeStart[g], edgeStart[g+1]), each as triangle * 3 + local edge.
     std::vector<std::array<std::uint32_t, 2>> edges;
