@@ -59,6 +59,20 @@ int runCommand(const veridem::app::RunOptions& options)
                               ": [simulation] 'type' must be \"dem\" or \"fdem2d\" (got \"" + type + "\")");
 }
 
+/// Refuses to run as one of several MPI processes (`mpirun -np N veridem ...`): each would run the
+/// whole scene and write the same files. MPI launchers tell each process the job's size (OpenMPI:
+/// OMPI_COMM_WORLD_SIZE; MPICH, Intel MPI and other PMI launchers: PMI_SIZE).
+void refuseSeveralMpiProcesses()
+{
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+        if (const char* value = std::getenv(name); value && std::atoi(value) > 1)
+            throw veridem::InputError(
+                std::string("started as one of ") + value + " MPI processes (" + name +
+                "): veridem runs a scene in one process (the MPI domain decomposition is not built "
+                "yet), so each process would run the whole scene and write the same files; run one "
+                "process, with --threads N for the cores");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -113,6 +127,7 @@ int main(int argc, char** argv)
 
     try
     {
+        refuseSeveralMpiProcesses();
         if (run->parsed())
         {
             runOptions.outDir = outDir;
