@@ -141,7 +141,9 @@ Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32
     std::vector<Task> level{
         Task{-1, false, out.bounds, parts, total,
              Box{{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}}}};
-    std::vector<int> taskOf(position.size(), 0); // this rank's particles: their box in `level`
+    // This rank's particles: their box in `level`, or kInPart once their box is a part.
+    constexpr int kInPart = -1;
+    std::vector<int> taskOf(position.size(), 0);
     out.region.resize(parts);
     out.cost.resize(parts);
     int nextPart = 0;
@@ -186,6 +188,8 @@ Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32
             std::fill(below.begin(), below.end(), 0);
             for (std::size_t i = 0; i < position.size(); ++i)
             {
+                if (taskOf[i] < 0)
+                    continue;
                 const Task& t = level[taskOf[i]];
                 if (!t.done && component(position[i], t.axis) < trial[taskOf[i]])
                     below[taskOf[i]] += weight[i];
@@ -246,11 +250,15 @@ Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32
         for (std::size_t i = 0; i < position.size(); ++i)
         {
             const int k = taskOf[i];
-            if (nodeOf[k] >= 0)
+            if (k < 0)
+                continue;
+            if (nodeOf[k] < 0)
             {
-                const Decomposition::Node& n = out.nodes[nodeOf[k]];
-                taskOf[i] = childOf[2 * k + (component(position[i], n.axis) < n.cut ? 0 : 1)];
+                taskOf[i] = kInPart; // its box became a part: not in the next level
+                continue;
             }
+            const Decomposition::Node& n = out.nodes[nodeOf[k]];
+            taskOf[i] = childOf[2 * k + (component(position[i], n.axis) < n.cut ? 0 : 1)];
         }
         level = std::move(next);
     }
