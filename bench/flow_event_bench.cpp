@@ -5,12 +5,18 @@
 //     first one bins the particles on the insertion grid, the later ones reuse it);
 //   - the rebuild of the contact lists that insertion would cost with a rebuild
 //     (rebuildAfterParticleChange), for comparison;
-//   - a removal event of K spheres of the bottom layer (an outlet: removal, renaming and the
-//     rebuild that follows).
+//   - a removal event of K spheres of the bottom layer (an outlet, ParticleFlow::apply: the
+//     particles retired, dem/particle_changes.h), against the same removal made at once on a copy
+//     of the world (removeParticles and rebuildAfterParticleChange: what an event cost before
+//     retirement);
+//   - the step after it (velocity Verlet over the bed, retired particles in it) against a step of
+//     the copy, and the next rebuild of the lists (which removes the retired particles from the
+//     store) against a rebuild of the copy.
 //
 //   veridem_flow_event_bench [--particles N] [--count K] [--threads T]
 //
-// N defaults to 1e5, K to 1000. Times are wall-clock on the given threads (default 1).
+// N defaults to 1e5, K to 1000. Times are wall-clock on the given threads (default 1), and, for
+// the removal part, also the calling thread's CPU time (one thread: the machine may be shared).
 #include "bench_args.h"
 #include "dem/particle_changes.h"
 #include "dem/particle_flow.h"
@@ -23,6 +29,8 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <time.h>
+#include <vector>
 
 using namespace veridem;
 using bench::seconds;
@@ -30,6 +38,35 @@ using bench::wholeNumber;
 
 namespace
 {
+
+/// Wall-clock and calling-thread CPU seconds between laps.
+class Timer
+{
+  public:
+    struct Lap
+    {
+        double wall, cpu;
+    };
+    Timer() : wall_(std::chrono::steady_clock::now()), cpu_(threadCpu()) {}
+    Lap lap()
+    {
+        const double cpu = threadCpu();
+        const Lap l{seconds(wall_), cpu - cpu_};
+        wall_ = std::chrono::steady_clock::now();
+        cpu_ = threadCpu();
+        return l;
+    }
+
+  private:
+    static double threadCpu()
+    {
+        timespec t{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+        return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    }
+    std::chrono::steady_clock::time_point wall_;
+    double cpu_;
+};
 
 dem::Wall plane(const char* name, const Vec3& point, const Vec3& normal)
 {
@@ -113,9 +150,27 @@ int run(std::size_t n, std::size_t k, int threads)
     corner.region.min = {-1, -1, -1};
     corner.region.max = {width, side, kPitch}; // the bottom layer's first k / 50 rows
     out.outlets.push_back(corner);
-    start = std::chrono::steady_clock::now();
+    std::vector<std::uint32_t> doomed; // the outlet's particles, for the removal at once
+    for (std::size_t i = 0; i < world.particles.size(); ++i)
+        if (corner.region.contains(world.particles.position[i]))
+            doomed.push_back(static_cast<std::uint32_t>(i));
+    dem::World atOnce = world;
+    Timer timer;
     out.apply(world, 1e-5);
-    const double removeSeconds = seconds(start);
+    const Timer::Lap retire = timer.lap();
+    dem::removeParticles(atOnce, doomed);
+    dem::rebuildAfterParticleChange(atOnce);
+    const Timer::Lap remove = timer.lap();
+    dem::step(world, 1e-5);
+    const Timer::Lap stepRetired = timer.lap();
+    dem::step(atOnce, 1e-5);
+    const Timer::Lap stepAtOnce = timer.lap();
+    dem::rebuildAfterParticleChange(world); // (the rebuild the step makes: the retired leave)
+    const Timer::Lap compact = timer.lap();
+    dem::rebuildAfterParticleChange(atOnce);
+    const Timer::Lap rebuild = timer.lap();
+    if (world.particles.size() != atOnce.particles.size())
+        throw std::runtime_error("the retired particles did not leave the store");
 
     std::printf("N %zu  K %zu  threads %d  (prepare %.3f s)\n", n, k, threads, prepareSeconds);
     std::printf("  insertion events: %zu inserted; first %.3f ms (bins the bed), then", inserted,
@@ -124,8 +179,14 @@ int run(std::size_t n, std::size_t k, int threads)
         std::printf(" %.3f", 1e3 * insertSeconds[e]);
     std::printf(" ms\n");
     std::printf("  a rebuild of the contact lists: %.3f ms\n", 1e3 * rebuildSeconds);
-    std::printf("  removal event: %llu removed in %.3f ms\n",
-                static_cast<unsigned long long>(out.outlets[0].count), 1e3 * removeSeconds);
+    std::printf("  removal event: %llu removed; ms wall (thread CPU):\n",
+                static_cast<unsigned long long>(out.outlets[0].count));
+    std::printf("    retired %.3f (%.3f), at once %.3f (%.3f)\n", 1e3 * retire.wall, 1e3 * retire.cpu,
+                1e3 * remove.wall, 1e3 * remove.cpu);
+    std::printf("    the step after: retired %.3f (%.3f), at once %.3f (%.3f)\n", 1e3 * stepRetired.wall,
+                1e3 * stepRetired.cpu, 1e3 * stepAtOnce.wall, 1e3 * stepAtOnce.cpu);
+    std::printf("    the next rebuild: removing the retired %.3f (%.3f), plain %.3f (%.3f)\n",
+                1e3 * compact.wall, 1e3 * compact.cpu, 1e3 * rebuild.wall, 1e3 * rebuild.cpu);
     return 0;
 }
 

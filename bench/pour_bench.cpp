@@ -12,6 +12,7 @@
 // peak RSS per particle at the largest count, and the kinetic energy at the end (the same bits on
 // any thread count).
 #include "bench_args.h"
+#include "dem/particle_changes.h"
 #include "dem/world.h"
 #include "exec/thread_pool.h"
 #include "io/dem_scene.h"
@@ -112,6 +113,7 @@ int run(const Options& o)
             throw std::runtime_error("the run stopped at step " + std::to_string(world.stepCount) +
                                      " (not finite or overlap above max_overlap_fraction)");
     }
+    dem::compactRetiredParticles(world); // (the count and the energy below: live particles only)
     std::uint64_t inserted = 0, removed = 0;
     for (const dem::Inserter& in : flow.inserters)
         inserted += in.inserted;

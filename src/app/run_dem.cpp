@@ -3,6 +3,7 @@
 // far) or on SIGINT/SIGTERM (with a checkpoint), print a summary.
 #include "app/run_scene.h"
 #include "core/error.h"
+#include "dem/particle_changes.h"
 #include "dem/time_step.h"
 #include "exec/thread_pool.h"
 #include "io/contact_output.h"
@@ -188,7 +189,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
 
     if (measure.energy)
     {
-        ledger.start(world); // (a restored ledger keeps its state)
+        dem::compactRetiredParticles(world); // (step 0's outlets: the ledger reads every particle)
+        ledger.start(world);                 // (a restored ledger keeps its state)
         world.observer = &ledger;
     }
 
@@ -210,6 +212,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         outletRecorder.emplace(options.outDir, outletBytes);
     const auto recordOutputs = [&]
     {
+        dem::compactRetiredParticles(world); // (outputs never show a retired particle)
         recorder.record(world);
         const std::vector<dem::ContactRecord> now = dem::evaluateContacts(world, 0.0);
         thermo.record(world, now);

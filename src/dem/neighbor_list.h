@@ -138,6 +138,15 @@ class NeighborList
     /// are the caller's (PeriodicPairs, evaluated after the pair stage) until the next rebuild.
     /// O(particles appended).
     void appendParticles(const ParticleStore& particles, std::size_t from);
+    /// Particle i was parked at x [m] between steps (a retired particle, dem/particle_changes.h):
+    /// its motion is measured from there, so that it never triggers a rebuild. O(1).
+    void parkParticle(std::uint32_t i, const Vec3& x)
+    {
+        if (i < positionAtBuild_.size())
+            positionAtBuild_[i] = x;
+        if (i < positionAtActiveBuild_.size())
+            positionAtActiveBuild_[i] = x;
+    }
     /// True if the list was built (or appended to) for `particleCount` particles.
     bool builtFor(std::size_t particleCount) const
     {

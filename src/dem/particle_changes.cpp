@@ -49,6 +49,50 @@ void removeParticles(World& world, std::vector<std::uint32_t> doomed)
     world.periodicPairs.renameParticles(newIndex);
 }
 
+bool retiresWithoutRebuild(const World& world)
+{
+    const std::size_t n = world.particles.size();
+    return world.prepared && !world.observer && world.neighbors.reach == 0 && world.neighbors.builtFor(n) &&
+           world.wallContacts.start.size() == n + 1;
+}
+
+void retireParticles(World& world, const std::vector<std::uint32_t>& doomed)
+{
+    ParticleStore& p = world.particles;
+    const Vec3 parked{kParkedCoordinate, kParkedCoordinate, kParkedCoordinate};
+    for (const std::uint32_t i : doomed)
+    {
+        p.position[i] = parked;
+        p.velocity[i] = p.angularVelocity[i] = Vec3{};
+        p.force[i] = p.torque[i] = PaddedVec3{};
+        p.radius[i] = 0;
+        if (p.positionRadius.size() == p.size())
+            p.positionRadius[i] = p.positionRadiusRow(i);
+        world.neighbors.parkParticle(i, parked);
+    }
+}
+
+bool removeRetiredParticles(World& world)
+{
+    const ParticleStore& p = world.particles;
+    std::vector<std::uint32_t> doomed;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.retired(i))
+            doomed.push_back(static_cast<std::uint32_t>(i));
+    if (doomed.empty())
+        return false;
+    removeParticles(world, std::move(doomed));
+    return true;
+}
+
+void compactRetiredParticles(World& world)
+{
+    const ParticleStore& p = world.particles;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.retired(i))
+            return rebuildAfterParticleChange(world);
+}
+
 bool insertsWithoutRebuild(const World& world, std::size_t particleCount, Real largestRadius)
 {
     if (!world.prepared || !world.neighbors.builtFor(particleCount) ||

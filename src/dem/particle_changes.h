@@ -14,12 +14,42 @@
 // neighbour list with their history (PeriodicPairs::handOver). The cost is the inserted
 // particles' own: their neighbourhood, their walls and the pairs listed since the last rebuild.
 //
-// Removal (removeParticles). A removed particle's place is taken by the last particle
-// (ParticleStore::swapRemove), so the store stays dense; the contact lists' keys are renamed to
-// the new indices (NeighborList, WallContactList, PeriodicPairs::renameParticles) and the
-// history follows its pair through the rebuild that must follow (rebuildAfterParticleChange,
-// world.h). The cost is the removed particles' own plus one pass over the contact keys and a
-// rebuild: O(N) per event that removes.
+// Removal, in two parts. An outlet's particle is first retired (retireParticles), at its own
+// cost: it is parked at P = (kParkedCoordinate, kParkedCoordinate, kParkedCoordinate) with zero
+// velocity, angular velocity, force and torque and radius 0 (the mark of a retired particle,
+// ParticleStore::retired), and its neighbour-list references move with it
+// (NeighborList::parkParticle). Its pair slots and wall slots stay in the lists but can give no
+// contact:
+//   - a pair slot touches only if |x_i - x_j| < r_i + r_j + reach: a live particle is ~1e30 m
+//     away; two retired ones share P, and 0 < 0 + 0 + reach fails since retirement needs a zero
+//     reach (retiresWithoutRebuild);
+//   - with radius 0 no wall touches: a plane needs -r <= s < r for the signed distance s, a
+//     cylinder an overlap in (0, 2r], a mesh face, edge or vertex a distance below r, all empty
+//     for r = 0; a dish touches only below its rim, and P is above every rim.
+// The next force stage finds its contacts open and drops their history, as for any contact that
+// opens, so its partners feel nothing from that step on. It does not move: a drift adds dt v to a
+// coordinate of 1e30, whose spacing is 2^47 m (1.4e14 m), and rounds back to it while |dt v| is
+// below 7e13 m (v grows by |g| dt a step from 0), so its displacement from its reference stays 0
+// and it never triggers the rebuild. Its state stays finite and touches nothing, so the health
+// checks pass over it.
+//
+// The retired particles leave the store at the next rebuild of the contact lists, the one the
+// step makes when some particle or wall has moved more than skin/2 (world.cpp,
+// rebuildContactLists; O(N) anyway): removeParticles moves the last particle into each one's place
+// (ParticleStore::swapRemove) and renames the lists' keys (NeighborList, WallContactList,
+// PeriodicPairs::renameParticles); the rebuild carries the history by key. What reads the
+// particles by slot compacts first (compactRetiredParticles: the driver's outputs, verification
+// samplers), so no output shows a retired particle. A checkpoint saves them as they are (the store,
+// the references, the lists), so a restore continues the same run. Where retiring is not possible
+// (retiresWithoutRebuild: a StepObserver, e.g. the energy ledger, reads every particle each step;
+// a touch reach) an event removes at once and rebuilds (rebuildAfterParticleChange).
+//
+// Bits. A removal acts at the same step as a removal at once, but the slots differ until the
+// compaction (the retired particle keeps its slot, the last particle stays where it is, particles
+// inserted meanwhile come after it), and a particle's force is summed in slot order
+// (neighbor_list.h): a scene with outlets gives other bits, the same physics to round-off. As the
+// outputs compact, the output interval of such a scene changes its bits too; the thread count
+// and a checkpoint's restart do not.
 #pragma once
 
 #include "dem/particle_index.h"
@@ -31,9 +61,32 @@
 namespace veridem::dem
 {
 
-/// Removes the particles `doomed` (indices, each once, any order). The contact lists must be
-/// rebuilt before the next step (rebuildAfterParticleChange).
+/// Removes the particles `doomed` (indices, each once, any order) from the store and renames the
+/// contact lists' keys. The contact lists must be rebuilt before the next force stage
+/// (rebuildAfterParticleChange, or the step's rebuild). O(N).
 void removeParticles(World& world, std::vector<std::uint32_t> doomed);
+
+/// Where a retired particle is parked on every axis [m] (file comment).
+inline constexpr Real kParkedCoordinate = 1e30;
+
+/// True if particles of `world` can be retired (retireParticles) instead of removed at once: the
+/// world is prepared and its contact lists are built for its particles, no StepObserver reads it
+/// (it would see the retired particles) and the touch reach is 0 (file comment).
+bool retiresWithoutRebuild(const World& world);
+
+/// Retires the particles `doomed` (indices, each once, none fixed or retired): out of the physics
+/// from the next step on, out of the store at the next rebuild (file comment). Needs
+/// retiresWithoutRebuild(world). O(doomed).
+void retireParticles(World& world, const std::vector<std::uint32_t>& doomed);
+
+/// Removes the retired particles from the store (removeParticles); returns false, changing
+/// nothing, if there are none. The contact lists must then be rebuilt. O(N).
+bool removeRetiredParticles(World& world);
+
+/// If some particles are retired: removes them and rebuilds the contact lists
+/// (rebuildAfterParticleChange). For callers that read the particles by slot (outputs, samplers).
+/// O(N).
+void compactRetiredParticles(World& world);
 
 /// The search distance beyond r_i + r_j [m] for an inserted particle's pairs: 1.5 skin + reach.
 /// Until the next rebuild an inserted particle moves at most skin/2 from where it is inserted

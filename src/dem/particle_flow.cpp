@@ -257,7 +257,7 @@ bool ParticleFlow::apply(World& world, Real dt)
         const ParticleStore& p = world.particles;
         for (std::size_t i = 0; i < p.size(); ++i)
         {
-            if (p.fixed[i])
+            if (p.fixed[i] || p.retired(i))
                 continue;
             for (Outlet& o : outlets)
                 if (o.region.contains(p.position[i]))
@@ -270,8 +270,13 @@ bool ParticleFlow::apply(World& world, Real dt)
         }
         if (!doomed.empty())
         {
-            removeParticles(world, std::move(doomed));
-            rebuildAfterParticleChange(world);
+            if (retiresWithoutRebuild(world))
+                retireParticles(world, doomed); // (out of the store at the next rebuild)
+            else
+            {
+                removeParticles(world, std::move(doomed));
+                rebuildAfterParticleChange(world);
+            }
             removed = true;
         }
     }

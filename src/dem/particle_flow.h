@@ -11,8 +11,10 @@
 // wall; after `kAttempts` failed positions the region is full: the inserter says so once
 // (stderr) and tries again at the next event. The new particles join the contact lists without a
 // rebuild where the scene allows it (dem/particle_changes.h, addInsertedParticles), so an event
-// that only inserts costs its own particles. An event that removes particles rebuilds the lists
-// (removeParticles), and the outlets test every particle's centre: O(N), cheap beside a step.
+// that only inserts costs its own particles. An outlet retires the particles whose centre it holds
+// (dem/particle_changes.h, retireParticles): out of the physics at once, out of the store at the
+// next rebuild of the contact lists, so an event that removes costs its own particles too; the
+// outlets test every particle's centre: O(N), cheap beside a step.
 #pragma once
 
 #include "dem/particle_index.h"
@@ -126,10 +128,12 @@ struct ParticleFlow
     /// The largest radius an inserter can draw [m] (0 if none).
     Real largestRadius() const;
     /// Outlets, then inserters, at world.time (dt [s]: a time within half a step of a window's
-    /// start counts as in it). If any particle left, the contact lists are rebuilt
-    /// (rebuildAfterParticleChange); particles inserted join them without a rebuild
+    /// start counts as in it). The particles an outlet takes are retired (retireParticles) where
+    /// retiresWithoutRebuild allows, else removed with a rebuild of the contact lists
+    /// (rebuildAfterParticleChange); particles inserted join the lists without a rebuild
     /// (addInsertedParticles) where insertsWithoutRebuild allows, else with one. Returns true if
-    /// the particles changed.
+    /// the particles changed. Retired particles stay in the store until the next rebuild:
+    /// compactRetiredParticles before reading the particles by slot.
     bool apply(World& world, Real dt);
 };
 

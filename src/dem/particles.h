@@ -72,6 +72,11 @@ struct ParticleStore
 
     std::size_t size() const { return position.size(); }
 
+    /// True if particle i is retired: taken out of the physics by an outlet, waiting to leave the
+    /// store at the next rebuild of the contact lists (dem/particle_changes.h). A retired particle
+    /// has radius 0; every other particle's radius is > 0 (the scene reader refuses others).
+    bool retired(std::size_t i) const { return radius[i] == 0; }
+
     /// Adds a solid sphere; returns its index. radius [m], density [kg/m^3].
     std::uint32_t add(Vec3 x, Vec3 v, Vec3 w, Real r, Real density, std::uint32_t materialId)
     {

@@ -32,6 +32,7 @@
 #include "dem/forces.h"
 #include "dem/integrate.h"
 #include "dem/lanes.h"
+#include "dem/particle_changes.h"
 #include "exec/isa.h"
 
 #include <algorithm>
@@ -98,8 +99,15 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
            world.wallContacts.needsRebuild(world.walls, world.neighbors.skin);
 }
 
+Real pairTouchReach(const World& world);
+
 [[gnu::noinline, gnu::cold]] void rebuildContactLists(World& world)
 {
+    if (removeRetiredParticles(world)) // (dem/particle_changes.h: they leave the store here)
+    {
+        refreshFixedParticles(world);
+        world.neighbors.reach = pairTouchReach(world);
+    }
     if (world.domain.any()) // positions wrapped into the box, the pairs through an image found
     {
         wrapParticles(world.domain, world.particles);
@@ -419,6 +427,7 @@ void prepare(World& world)
 
 void rebuildAfterParticleChange(World& world)
 {
+    removeRetiredParticles(world);
     refreshFixedParticles(world);
     world.neighbors.reach = pairTouchReach(world);
     rebuildContactLists(world);
@@ -430,7 +439,7 @@ void step(World& world, Real dt)
         prepare(world);
 
     if (world.particles.size() == 1 && world.exec.fusedSteps && !world.exec.profile.enabled &&
-        !world.observer && world.fixedIndex.empty())
+        !world.observer && world.fixedIndex.empty() && !world.particles.retired(0))
         return stepOneParticle(world, dt); // the stages below, the ball's state in registers
 
     StageClock clock(world.exec.profile);

@@ -149,6 +149,8 @@ TEST(ParticleChanges, AnInsertedParticleKeepsItsSpringThroughARemovalWhileItSlid
             flow.outlets.push_back(outlet);
             flow.inserters.clear();
             ASSERT_TRUE(flow.apply(flowing, dt));
+            ASSERT_TRUE(flowing.particles.retired(0));
+            compactRetiredParticles(flowing); // (N leaves the store now, as before an output)
             ASSERT_EQ(flowing.particles.size(), 2u);
             ASSERT_EQ(flowing.particles.id[0], 2u);     // P, moved into N's place
             EXPECT_TRUE(flowing.periodicPairs.empty()); // the rebuild took the pair into the list

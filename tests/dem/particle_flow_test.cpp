@@ -241,6 +241,10 @@ TEST(Outlet, CountsAndMass)
     EXPECT_TRUE(flow.apply(world, 1e-4));
     EXPECT_EQ(flow.outlets[0].count, 5u);
     EXPECT_DOUBLE_EQ(flow.outlets[0].mass, expected); // (summed in another order: a rounding apart)
+    ASSERT_EQ(world.particles.size(), 10u);           // retired, in the store until the next rebuild
+    for (std::size_t i = 0; i < 10; ++i)
+        EXPECT_EQ(world.particles.retired(i), i >= 5) << i;
+    compactRetiredParticles(world);
     ASSERT_EQ(world.particles.size(), 5u);
     std::vector<std::uint32_t> ids = world.particles.id;
     std::sort(ids.begin(), ids.end());

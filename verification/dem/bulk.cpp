@@ -1,6 +1,7 @@
 #include "bulk.h"
 
 #include "core/error.h"
+#include "dem/particle_changes.h"
 #include "dem/time_step.h"
 #include "io/particle_flow_keys.h"
 #include "io/toml_reader.h"
@@ -61,7 +62,10 @@ void runScene(io::DemScene& scene, Real duration, Real sampleInterval, const Cas
         if (flowEvery && world.stepCount % flowEvery == 0)
             scene.flow.apply(world, dt);
         if (sampleEvery && (world.stepCount - first) % sampleEvery == 0 && sample)
+        {
+            dem::compactRetiredParticles(world); // (a sampler reads the particles by slot)
             sample(world);
+        }
         if (context.showProgress)
         {
             const auto now = std::chrono::steady_clock::now();
@@ -76,6 +80,7 @@ void runScene(io::DemScene& scene, Real duration, Real sampleInterval, const Cas
     }
     if (context.showProgress && lastReport != start)
         std::fprintf(stderr, "\r%*s\r", 70, "");
+    dem::compactRetiredParticles(world); // (the caller reads the particles)
 }
 
 Real topOfParticles(const World& world)

@@ -24,7 +24,8 @@ void requireResolvedContacts(const io::DemScene& scene, const std::string& label
 
 /// Steps the scene for `duration` [s] at scene.dt (times context.dtScale), in runs of steps up to
 /// the next particle-flow step (where flow.apply runs, as in `veridem run`) or sample; calls
-/// sample(world) every `sampleInterval` [s] (rounded to whole steps; 0: never). Throws
+/// sample(world) every `sampleInterval` [s] (rounded to whole steps; 0: never). The particles an
+/// outlet retired leave the store before each sample and at the end (compactRetiredParticles). Throws
 /// SimulationError if the state becomes non-finite or an overlap exceeds the scene's
 /// max_overlap_fraction.
 void runScene(io::DemScene& scene, Real duration, Real sampleInterval, const CaseContext& context,
