@@ -1,9 +1,11 @@
 // The 3D checkpoint in process: a world restored from a checkpoint steps to the same bits as the
 // world that wrote it; every truncation and a sweep of byte flips of a checkpoint are refused
 // with an InputError (or, for a flip the checks cannot see, read without harm), never a crash
-// (this runs under ASan + UBSan in the asan preset). The run-level checks (straight vs
-// interrupted runs, 2D, signals) are tests/io/restart_check.py.
+// (this runs under ASan + UBSan in the asan preset); particles retired by an outlet restore to the
+// same run. The run-level checks (straight vs interrupted runs, 2D, signals) are
+// tests/io/restart_check.py.
 #include "core/error.h"
+#include "dem/particle_flow.h"
 #include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
 #include "io/toml_reader.h"
@@ -105,6 +107,44 @@ TEST(Checkpoint, RestoredWorldStepsToTheSameBits)
     EXPECT_TRUE(sameBits(original.world.pairHistory.rolling, restored.world.pairHistory.rolling));
     EXPECT_TRUE(sameBits(original.world.wallHistory.spring, restored.world.wallHistory.spring));
     EXPECT_EQ(original.world.time, restored.world.time);
+    std::filesystem::remove(path);
+}
+
+// Particles retired by an outlet (dem/particle_changes.h) are saved as they are, parked in the
+// store with their slots: the restored world steps to the same bits as the one that wrote it, and
+// both take them out of the store at the same rebuild.
+TEST(Checkpoint, RetiredParticlesRestoreToTheSameRun)
+{
+    io::DemScene original = makeScene();
+    dem::prepare(original.world);
+    dem::advance(original.world, original.dt, 1500);
+    dem::ParticleFlow flow;
+    dem::Outlet top;
+    top.region.kind = dem::FlowRegion::Kind::HalfSpace;
+    top.region.point = {0, 0, 0.02};
+    top.region.normal = {0, 0, 1};
+    flow.outlets.push_back(top);
+    const std::size_t count = original.world.particles.size();
+    ASSERT_TRUE(flow.apply(original.world, original.dt));
+    ASSERT_GT(flow.outlets[0].count, 0u);
+    ASSERT_EQ(original.world.particles.size(), count); // retired, still in the store
+    const auto path = scratch("veridem_checkpoint_retired_test.bin");
+    io::writeDemCheckpoint(path, original.world, 7, {{0.0}, {10, 20}, 0});
+
+    io::DemScene restored = makeScene();
+    io::readDemCheckpoint(path, restored.world, 7);
+    ASSERT_EQ(restored.world.particles.size(), count);
+    const std::size_t rebuilds = original.world.neighbors.rebuildCount();
+    dem::advance(original.world, original.dt, 700);
+    dem::advance(restored.world, restored.dt, 700);
+    ASSERT_GT(original.world.neighbors.rebuildCount(), rebuilds); // (a rebuild took them out)
+    EXPECT_EQ(original.world.particles.size() + flow.outlets[0].count, count);
+    EXPECT_EQ(original.world.particles.id, restored.world.particles.id);
+    EXPECT_TRUE(sameBits(original.world.particles.position, restored.world.particles.position));
+    EXPECT_TRUE(sameBits(original.world.particles.velocity, restored.world.particles.velocity));
+    EXPECT_TRUE(sameBits(original.world.particles.angularVelocity, restored.world.particles.angularVelocity));
+    EXPECT_TRUE(sameBits(original.world.pairHistory.spring, restored.world.pairHistory.spring));
+    EXPECT_TRUE(sameBits(original.world.wallHistory.spring, restored.world.wallHistory.spring));
     std::filesystem::remove(path);
 }
 
