@@ -4,7 +4,8 @@ a run stopped at step 1337 (between outputs, between insertion steps) and at ste
 insertion step) and restarted into the same directory, on 2 threads where the straight run had
 1, must write the same particles.csv, thermo.csv and outlets.csv, byte for byte, as the straight
 run (the inserter's generator, counts and ids, the outlet counts and the frozen flags are in the
-checkpoint, format version 4). The run is checked to insert and remove particles after each stop.
+checkpoint, format version 4). The run is checked to insert and remove particles after each stop,
+and its output to hold no retired particle (each frame's rows are thermo.csv's count).
 
 usage: /usr/bin/python3 restart_flow_check.py VERIDEM SCENE OUT_DIR
 """
@@ -38,8 +39,16 @@ removed = {float(r[0]): int(r[2]) for r in rows}
 check(removed[max(removed)] > removed[min(removed, key=lambda t: abs(t - 0.03))] > 0,
       f"the outlet removed nothing after the stops: {removed}")
 ids = set()
+rows_at = {}
 for line in open(f"{out}/straight/particles.csv").read().splitlines()[1:]:
-    ids.add(int(line.split(",")[1]))
+    f = line.split(",")
+    ids.add(int(f[1]))
+    rows_at[f[0]] = rows_at.get(f[0], 0) + 1
+    # An outlet's particles are parked at 1e30 m until they leave the store: never in the output.
+    check(all(abs(float(v)) < 1e3 for v in f[2:5]), f"a parked particle in particles.csv: {line}")
 check(len(ids) > 600, f"only {len(ids)} ids over the run: too few insertions")
+for line in open(f"{out}/straight/thermo.csv").read().splitlines()[1:]:
+    t, count = line.split(",")[:2]
+    check(rows_at.get(t, 0) == int(count), f"t = {t}: thermo counts {count} particles, particles.csv {rows_at.get(t, 0)}")
 
 sys.exit(rc.finish("restart with insertion"))
