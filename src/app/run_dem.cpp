@@ -3,7 +3,6 @@
 // far) or on SIGINT/SIGTERM (with a checkpoint), print a summary.
 #include "app/run_scene.h"
 #include "core/error.h"
-#include "dem/particle_changes.h"
 #include "dem/time_step.h"
 #include "exec/thread_pool.h"
 #include "io/contact_output.h"
@@ -189,8 +188,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
 
     if (measure.energy)
     {
-        dem::compactRetiredParticles(world); // (step 0's outlets: the ledger reads every particle)
-        ledger.start(world);                 // (a restored ledger keeps its state)
+        ledger.start(world); // (a restored ledger keeps its state)
         world.observer = &ledger;
     }
 
@@ -212,7 +210,6 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         outletRecorder.emplace(options.outDir, outletBytes);
     const auto recordOutputs = [&]
     {
-        dem::compactRetiredParticles(world); // (outputs never show a retired particle)
         recorder.record(world);
         const std::vector<dem::ContactRecord> now = dem::evaluateContacts(world, 0.0);
         thermo.record(world, now);
@@ -349,7 +346,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     if (options.progress)
         std::fprintf(stderr, "\r%*s\r", 78, "");
     std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %zu particles, %zu outputs in %s\n",
-                static_cast<unsigned long long>(stepsRun), scene.dt, world.time, world.particles.size(),
+                static_cast<unsigned long long>(stepsRun), scene.dt, world.time, world.particles.liveCount(),
                 recorder.framesWritten(), options.outDir.string().c_str());
     std::printf(
         "veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour rebuilds\n",

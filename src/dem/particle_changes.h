@@ -37,19 +37,21 @@
 // step makes when some particle or wall has moved more than skin/2 (world.cpp,
 // rebuildContactLists; O(N) anyway): removeParticles moves the last particle into each one's place
 // (ParticleStore::swapRemove) and renames the lists' keys (NeighborList, WallContactList,
-// PeriodicPairs::renameParticles); the rebuild carries the history by key. What reads the
-// particles by slot compacts first (compactRetiredParticles: the driver's outputs, verification
-// samplers), so no output shows a retired particle. A checkpoint saves them as they are (the store,
-// the references, the lists), so a restore continues the same run. Where retiring is not possible
-// (retiresWithoutRebuild: a StepObserver, e.g. the energy ledger, reads every particle each step;
-// a touch reach) an event removes at once and rebuilds (rebuildAfterParticleChange).
+// PeriodicPairs::renameParticles); the rebuild carries the history by key. Nothing else
+// compacts: the outputs skip them (ParticleStore::retired; the particle rows, the ParaView frames
+// and the thermo count list only the others) and a checkpoint saves them as they are (the store,
+// the references, the lists), so neither the output interval nor a restart changes the run. A
+// verification case whose sampler reads the store by slot may compact first
+// (compactRetiredParticles). Where retiring is not possible (retiresWithoutRebuild: a
+// StepObserver, e.g. the energy ledger, reads every particle each step; a touch reach) an event
+// removes at once and rebuilds (rebuildAfterParticleChange).
 //
 // Bits. A removal acts at the same step as a removal at once, but the slots differ until the
 // compaction (the retired particle keeps its slot, the last particle stays where it is, particles
 // inserted meanwhile come after it), and a particle's force is summed in slot order
-// (neighbor_list.h): a scene with outlets gives other bits, the same physics to round-off. As the
-// outputs compact, the output interval of such a scene changes its bits too; the thread count
-// and a checkpoint's restart do not.
+// (neighbor_list.h): a scene with outlets gives other bits than removal at once, the same physics
+// to round-off. The thread count, the output interval and a checkpoint's restart do not change
+// them.
 #pragma once
 
 #include "dem/particle_index.h"
@@ -84,7 +86,8 @@ void retireParticles(World& world, const std::vector<std::uint32_t>& doomed);
 bool removeRetiredParticles(World& world);
 
 /// If some particles are retired: removes them and rebuilds the contact lists
-/// (rebuildAfterParticleChange). For callers that read the particles by slot (outputs, samplers).
+/// (rebuildAfterParticleChange). For a caller that reads every particle by slot (a verification
+/// sampler); the run's outputs skip retired particles instead.
 /// O(N).
 void compactRetiredParticles(World& world);
 

@@ -76,6 +76,14 @@ struct ParticleStore
     /// store at the next rebuild of the contact lists (dem/particle_changes.h). A retired particle
     /// has radius 0; every other particle's radius is > 0 (the scene reader refuses others).
     bool retired(std::size_t i) const { return radius[i] == 0; }
+    /// The particles that are not retired: those the outputs list. O(N).
+    std::size_t liveCount() const
+    {
+        std::size_t n = 0;
+        for (const Real r : radius)
+            n += r != 0;
+        return n;
+    }
 
     /// Adds a solid sphere; returns its index. radius [m], density [kg/m^3].
     std::uint32_t add(Vec3 x, Vec3 v, Vec3 w, Real r, Real density, std::uint32_t materialId)

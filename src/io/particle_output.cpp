@@ -49,6 +49,8 @@ void ParticleRecorder::record(const dem::World& world)
     rows.reserve(kChunk + 512);
     for (std::size_t i = 0; i < p.size(); ++i)
     {
+        if (p.retired(i)) // (taken by an outlet, still in the store until the next list rebuild)
+            continue;
         // (Wrapped into a periodic box: between list rebuilds a particle may stand up to skin/2
         // outside it, dem/periodic.h.)
         const Vec3 x = dem::wrapPosition(world.domain, p.position[i]);
@@ -86,35 +88,42 @@ void ParticleRecorder::close()
 void ParticleRecorder::writeVtp(const dem::World& world, const std::filesystem::path& path) const
 {
     const auto& p = world.particles;
-    const std::size_t n = p.size();
+    std::vector<std::size_t> live; // the particles listed: all but the retired ones
+    live.reserve(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (!p.retired(i))
+            live.push_back(i);
+    const std::size_t n = live.size();
     AtomicFile file(path);
     std::ostream& out = file.stream();
     VtkXmlArrays arrays(format_);
     out << arrays.vtkFileOpening("PolyData") << "<PolyData>\n<Piece NumberOfPoints=\"" << n
         << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
     std::vector<double> flat(3 * n);
-    auto vectors = [&](const std::vector<Vec3>& values)
+    auto vectors = [&](const std::vector<Vec3>& values, bool wrap = false)
     {
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < n; ++k)
         {
-            flat[3 * i] = values[i].x;
-            flat[3 * i + 1] = values[i].y;
-            flat[3 * i + 2] = values[i].z;
+            // (positions wrapped into a periodic box, dem/periodic.h)
+            const Vec3 v = wrap ? dem::wrapPosition(world.domain, values[live[k]]) : values[live[k]];
+            flat[3 * k] = v.x;
+            flat[3 * k + 1] = v.y;
+            flat[3 * k + 2] = v.z;
         }
         return flat.data();
     };
     out << "<Points>\n";
-    std::vector<Vec3> wrapped; // positions wrapped into a periodic box (dem/periodic.h)
-    if (world.domain.any())
-        for (const Vec3& x : p.position)
-            wrapped.push_back(dem::wrapPosition(world.domain, x));
-    arrays.float64(out, "", 3, vectors(world.domain.any() ? wrapped : p.position), 3 * n);
+    arrays.float64(out, "", 3, vectors(p.position, world.domain.any()), 3 * n);
     out << "</Points>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
     std::vector<std::int64_t> ids(n);
-    for (std::size_t i = 0; i < n; ++i)
-        ids[i] = static_cast<std::int64_t>(p.id[i]);
+    std::vector<double> radii(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        ids[k] = static_cast<std::int64_t>(p.id[live[k]]);
+        radii[k] = p.radius[live[k]];
+    }
     arrays.int64(out, "id", 1, ids.data(), n);
-    arrays.float64(out, "radius", 1, p.radius.data(), n);
+    arrays.float64(out, "radius", 1, radii.data(), n);
     arrays.float64(out, "velocity", 3, vectors(p.velocity), 3 * n);
     arrays.float64(out, "angular_velocity", 3, vectors(p.angularVelocity), 3 * n);
     out << "</PointData>\n</Piece>\n</PolyData>\n";

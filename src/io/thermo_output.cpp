@@ -39,7 +39,7 @@ void ThermoRecorder::record(const dem::World& world, const std::vector<dem::Cont
         for (const dem::ContactRecord& c : contacts)
             elastic += c.storedEnergy();
     std::vector<ThermoValue> row = {world.time,
-                                    std::uint64_t(world.particles.size()),
+                                    std::uint64_t(world.particles.liveCount()),
                                     std::uint64_t(world.health.touchingPairs),
                                     std::uint64_t(world.health.touchingWalls),
                                     kinetic.translational,
