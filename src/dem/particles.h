@@ -119,40 +119,47 @@ struct ParticleStore
         positionRadius.reserve(n);
     }
 
-    /// Removes particle i by moving the last particle into its place (every array, its force and
-    /// torque rows included); the caller re-keys the contact lists (dem/particle_changes.h).
+    /// Copies particle `from`'s row (every array, its force and torque rows included) over
+    /// particle `to`'s.
+    void copyRow(std::size_t from, std::size_t to)
+    {
+        position[to] = position[from];
+        velocity[to] = velocity[from];
+        angularVelocity[to] = angularVelocity[from];
+        force[to] = force[from];
+        torque[to] = torque[from];
+        radius[to] = radius[from];
+        mass[to] = mass[from];
+        invMass[to] = invMass[from];
+        invInertia[to] = invInertia[from];
+        material[to] = material[from];
+        id[to] = id[from];
+        fixed[to] = fixed[from];
+        positionRadius[to] = positionRadius[from];
+    }
+
+    /// Keeps the first n particles (n <= size()).
+    void truncate(std::size_t n)
+    {
+        for (auto* a : {&position, &velocity, &angularVelocity})
+            a->resize(n);
+        force.resize(n);
+        torque.resize(n);
+        for (auto* a : {&radius, &mass, &invMass, &invInertia})
+            a->resize(n);
+        material.resize(n);
+        id.resize(n);
+        fixed.resize(n);
+        positionRadius.resize(n);
+    }
+
+    /// Removes particle i by moving the last particle into its place; the caller re-keys the
+    /// contact lists (dem/particle_changes.h).
     void swapRemove(std::size_t i)
     {
-        const std::size_t last = size() - 1;
-        if (i != last)
-        {
-            position[i] = position[last];
-            velocity[i] = velocity[last];
-            angularVelocity[i] = angularVelocity[last];
-            force[i] = force[last];
-            torque[i] = torque[last];
-            radius[i] = radius[last];
-            mass[i] = mass[last];
-            invMass[i] = invMass[last];
-            invInertia[i] = invInertia[last];
-            material[i] = material[last];
-            id[i] = id[last];
-            fixed[i] = fixed[last];
-            positionRadius[i] = positionRadius[last];
-        }
-        position.pop_back();
-        velocity.pop_back();
-        angularVelocity.pop_back();
-        force.pop_back();
-        torque.pop_back();
-        radius.pop_back();
-        mass.pop_back();
-        invMass.pop_back();
-        invInertia.pop_back();
-        material.pop_back();
-        id.pop_back();
-        fixed.pop_back();
-        positionRadius.pop_back();
+        if (i != size() - 1)
+            copyRow(size() - 1, i);
+        truncate(size() - 1);
     }
 };
 

@@ -15,6 +15,10 @@ class MpiCollective final : public Collective
     explicit MpiCollective(MPI_Comm comm = MPI_COMM_WORLD);
     void sum(std::span<std::uint64_t> values) const override;
     void max(std::span<double> values) const override;
+    /// exchange: the counts by MPI_Alltoall, then exchangeSized: one message per non-empty
+    /// buffer (MPI_Isend/Irecv).
+    Buffers exchange(Buffers outgoing) const override;
+    Buffers exchangeSized(Buffers outgoing, std::span<const std::size_t> incomingBytes) const override;
     int rank() const override { return rank_; }
     int size() const override { return size_; }
 

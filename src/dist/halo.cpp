@@ -1,0 +1,252 @@
+#include "dist/halo.h"
+
+#include "core/error.h"
+#include "dist/exchange_plan.h"
+
+#include <cstring>
+#include <span>
+#include <string>
+
+namespace veridem::dist
+{
+
+namespace
+{
+
+struct Writer
+{
+    std::vector<std::byte>& out;
+    template <class T> void put(const T& value)
+    {
+        const auto* bytes = reinterpret_cast<const std::byte*>(&value);
+        out.insert(out.end(), bytes, bytes + sizeof value);
+    }
+    void put(const Vec3& v)
+    {
+        put(v.x);
+        put(v.y);
+        put(v.z);
+    }
+};
+
+struct Reader
+{
+    std::span<const std::byte> in;
+    std::size_t at = 0;
+    template <class T> T get()
+    {
+        T value;
+        std::memcpy(&value, in.data() + at, sizeof value);
+        at += sizeof value;
+        return value;
+    }
+    Vec3 vec3()
+    {
+        const Real x = get<Real>(), y = get<Real>(), z = get<Real>();
+        return {x, y, z};
+    }
+};
+
+void checkSize(std::size_t bytes, std::size_t record, std::size_t expected, const char* what, int from)
+{
+    if (bytes != record * expected)
+        throw SimulationError(std::string("MPI exchange: ") + what + " from rank " + std::to_string(from) +
+                              ": " + std::to_string(bytes) + " bytes, expected " + std::to_string(expected) +
+                              " records of " + std::to_string(record));
+}
+
+void putRow(Writer& w, const dem::ParticleStore& p, std::size_t i)
+{
+    w.put(p.id[i]);
+    w.put(p.material[i]);
+    w.put(p.fixed[i]);
+    w.put(p.position[i]);
+    w.put(p.velocity[i]);
+    w.put(p.angularVelocity[i]);
+    for (const Real v : {p.radius[i], p.mass[i], p.invMass[i], p.invInertia[i]})
+        w.put(v);
+}
+
+/// Appends the rows of `in` to the store (zero force and torque); returns how many.
+std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int from)
+{
+    if (in.size() % kRowBytes != 0)
+        checkSize(in.size(), kRowBytes, in.size() / kRowBytes, "particle rows", from);
+    Reader r{in};
+    const std::size_t count = in.size() / kRowBytes;
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        p.id.push_back(r.get<std::uint32_t>());
+        p.material.push_back(r.get<std::uint32_t>());
+        p.fixed.push_back(r.get<std::uint8_t>());
+        p.position.push_back(r.vec3());
+        p.velocity.push_back(r.vec3());
+        p.angularVelocity.push_back(r.vec3());
+        p.radius.push_back(r.get<Real>());
+        p.mass.push_back(r.get<Real>());
+        p.invMass.push_back(r.get<Real>());
+        p.invInertia.push_back(r.get<Real>());
+        p.force.emplace_back();
+        p.torque.emplace_back();
+        p.positionRadius.push_back(p.positionRadiusRow(p.size() - 1));
+    }
+    return count;
+}
+
+} // namespace
+
+std::size_t Halo::ghosts() const
+{
+    std::size_t n = 0;
+    for (const std::size_t c : ghostCount)
+        n += c;
+    return n;
+}
+
+int Halo::neighbours() const
+{
+    int n = 0;
+    for (std::size_t b = 0; b < sent.size(); ++b)
+        n += !sent[b].empty() || ghostCount[b] != 0;
+    return n;
+}
+
+Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposition& d, Real halo,
+                       const Collective& comm)
+{
+    const int ranks = comm.size(), me = comm.rank();
+    if (d.parts() != ranks)
+        throw InputError("MPI exchange: the decomposition has " + std::to_string(d.parts()) + " parts for " +
+                         std::to_string(ranks) + " ranks");
+    if (keep > p.size())
+        throw InputError("MPI exchange: keep " + std::to_string(keep) + " of " + std::to_string(p.size()) +
+                         " particles");
+    p.truncate(keep); // (the old ghosts)
+    Halo h;
+
+    // Migrants: out with their rows, the others closed up in order, then the arrivals appended.
+    const ExchangePlan leave = planExchange(d, me, p.position, p.radius, halo);
+    Buffers out(ranks);
+    std::vector<std::uint8_t> leaving(p.size(), 0);
+    for (int b = 0; b < ranks; ++b)
+    {
+        out[b].reserve(leave.migrate[b].size() * kRowBytes);
+        Writer w{out[b]};
+        for (const std::uint32_t i : leave.migrate[b])
+        {
+            putRow(w, p, i);
+            leaving[i] = 1;
+        }
+        h.bytesSent += out[b].size();
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (!leaving[i])
+        {
+            if (kept != i)
+                p.copyRow(i, kept);
+            ++kept;
+        }
+    p.truncate(kept);
+    Buffers in = comm.exchange(std::move(out));
+    for (int a = 0; a < ranks; ++a)
+        if (a != me)
+            addRows(in[a], p, a);
+    h.owned = p.size();
+
+    // Ghosts: every owned particle to each rank whose region is within r_i + halo.
+    const ExchangePlan near = planExchange(d, me, p.position, p.radius, halo);
+    out.assign(ranks, {});
+    for (int b = 0; b < ranks; ++b)
+    {
+        out[b].reserve(near.ghost[b].size() * kRowBytes);
+        Writer w{out[b]};
+        for (const std::uint32_t i : near.ghost[b])
+            putRow(w, p, i);
+        h.bytesSent += out[b].size();
+    }
+    h.sent = near.ghost;
+    in = comm.exchange(std::move(out));
+    h.ghostFirst.assign(ranks, p.size());
+    h.ghostCount.assign(ranks, 0);
+    for (int a = 0; a < ranks; ++a)
+    {
+        h.ghostFirst[a] = p.size();
+        if (a != me)
+            h.ghostCount[a] = addRows(in[a], p, a);
+    }
+    return h;
+}
+
+void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
+{
+    const int ranks = comm.size();
+    Buffers out(ranks);
+    for (int b = 0; b < ranks; ++b)
+    {
+        out[b].reserve(h.sent[b].size() * kMotionBytes);
+        Writer w{out[b]};
+        for (const std::uint32_t i : h.sent[b])
+        {
+            w.put(p.position[i]);
+            w.put(p.velocity[i]);
+            w.put(p.angularVelocity[i]);
+        }
+    }
+    std::vector<std::size_t> sizes(ranks);
+    for (int a = 0; a < ranks; ++a)
+        sizes[a] = h.ghostCount[a] * kMotionBytes;
+    const Buffers in = comm.exchangeSized(std::move(out), sizes);
+    for (int a = 0; a < ranks; ++a)
+    {
+        if (a == comm.rank())
+            continue;
+        checkSize(in[a].size(), kMotionBytes, h.ghostCount[a], "ghost motion", a);
+        Reader r{in[a]};
+        for (std::size_t k = 0; k < h.ghostCount[a]; ++k)
+        {
+            const std::size_t g = h.ghostFirst[a] + k;
+            p.position[g] = r.vec3();
+            p.velocity[g] = r.vec3();
+            p.angularVelocity[g] = r.vec3();
+            p.positionRadius[g] = p.positionRadiusRow(g);
+        }
+    }
+}
+
+void returnGhostForces(dem::ParticleStore& p, const Halo& h, const Collective& comm)
+{
+    const int ranks = comm.size();
+    Buffers out(ranks);
+    for (int a = 0; a < ranks; ++a)
+    {
+        out[a].reserve(h.ghostCount[a] * kForceBytes);
+        Writer w{out[a]};
+        for (std::size_t k = 0; k < h.ghostCount[a]; ++k)
+        {
+            const std::size_t g = h.ghostFirst[a] + k;
+            w.put(Vec3(p.force[g]));
+            w.put(Vec3(p.torque[g]));
+            p.force[g] = p.torque[g] = dem::PaddedVec3{};
+        }
+    }
+    std::vector<std::size_t> sizes(ranks);
+    for (int b = 0; b < ranks; ++b)
+        sizes[b] = h.sent[b].size() * kForceBytes;
+    const Buffers in = comm.exchangeSized(std::move(out), sizes);
+    for (int b = 0; b < ranks; ++b) // (ascending rank: one order of the sums)
+    {
+        if (b == comm.rank())
+            continue;
+        checkSize(in[b].size(), kForceBytes, h.sent[b].size(), "ghost forces", b);
+        Reader r{in[b]};
+        for (const std::uint32_t i : h.sent[b])
+        {
+            const Vec3 f = r.vec3(), t = r.vec3();
+            p.force[i] = Vec3(p.force[i]) + f;
+            p.torque[i] = Vec3(p.torque[i]) + t;
+        }
+    }
+}
+
+} // namespace veridem::dist
