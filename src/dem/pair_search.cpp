@@ -1,5 +1,6 @@
 #include "dem/pair_search.h"
 
+#include "dem/cell_grid.h"
 #include "dem/parallel.h"
 
 #include <algorithm>
@@ -34,13 +35,6 @@ int classOf(Real r, Real largest, int classes)
         bound *= 0.5;
     }
     return k;
-}
-
-/// Cell index along one axis of the value [m] (NaN: cell 0; beyond the grid: its last cell).
-std::size_t coordinate(Real value, Real origin, Real cell, std::size_t count)
-{
-    const Real c = (value - origin) / cell;
-    return c >= 0 && c < Real(count) ? static_cast<std::size_t>(c) : c >= Real(count) ? count - 1 : 0;
 }
 
 } // namespace
@@ -116,29 +110,16 @@ void findPairsWithin(const ParticleStore& particles, Real search, std::vector<st
         ClassGrid& g = grids[classes > 1 ? classOfParticle[i] : 0];
         const Vec3& x = particles.position[i];
         const std::size_t c =
-            (coordinate(x.z, lo.z, g.cell, g.n[2]) * g.n[1] + coordinate(x.y, lo.y, g.cell, g.n[1])) *
+            (cellCoordinate(x.z, lo.z, g.cell, g.n[2]) * g.n[1] + cellCoordinate(x.y, lo.y, g.cell, g.n[1])) *
                 g.n[0] +
-            coordinate(x.x, lo.x, g.cell, g.n[0]);
+            cellCoordinate(x.x, lo.x, g.cell, g.n[0]);
         cellOf[i] = static_cast<std::uint32_t>(c);
         ++g.cellStart[c + 1];
     }
-    for (int k = 0; k < classes; ++k)
-    {
-        ClassGrid& g = grids[k];
-        for (std::size_t c = 0; c + 1 < g.cellStart.size(); ++c)
-            g.cellStart[c + 1] += g.cellStart[c];
-    }
-    {
-        std::vector<std::uint32_t> fill[kMaxSizeClasses];
-        for (int k = 0; k < classes; ++k)
-            if (grids[k].count > 0)
-                fill[k].assign(grids[k].cellStart.begin(), grids[k].cellStart.end() - 1);
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            const int k = classes > 1 ? classOfParticle[i] : 0;
-            grids[k].cellParticles[fill[k][cellOf[i]]++] = static_cast<std::uint32_t>(i);
-        }
-    }
+    sortByCell(
+        cellOf, classes, [&](std::size_t i) { return classes > 1 ? int(classOfParticle[i]) : 0; },
+        [&](int k) -> std::vector<std::uint32_t>& { return grids[k].cellStart; },
+        [&](int k) { return grids[k].cellParticles.data(); });
 
     // For each i, all j > i within r_i + r_j + search, in ascending j. Each chunk of particles
     // (one per thread) collects its own pairs; the chunks are concatenated in order.
@@ -171,9 +152,9 @@ void findPairsWithin(const ParticleStore& particles, Real search, std::vector<st
                                           : cellsAway < Real(widest)
                                               ? static_cast<std::size_t>(std::ceil(cellsAway))
                                               : widest; // (also NaN: the whole grid)
-                    const std::size_t cx = coordinate(xi.x, lo.x, g.cell, g.n[0]),
-                                      cy = coordinate(xi.y, lo.y, g.cell, g.n[1]),
-                                      cz = coordinate(xi.z, lo.z, g.cell, g.n[2]);
+                    const std::size_t cx = cellCoordinate(xi.x, lo.x, g.cell, g.n[0]),
+                                      cy = cellCoordinate(xi.y, lo.y, g.cell, g.n[1]),
+                                      cz = cellCoordinate(xi.z, lo.z, g.cell, g.n[2]);
                     const std::size_t xBegin = cx > m ? cx - m : 0, xEnd = std::min(cx + m, g.n[0] - 1);
                     for (std::size_t z = cz > m ? cz - m : 0; z <= std::min(cz + m, g.n[2] - 1); ++z)
                         for (std::size_t y = cy > m ? cy - m : 0; y <= std::min(cy + m, g.n[1] - 1); ++y)

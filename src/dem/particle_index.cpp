@@ -1,5 +1,7 @@
 #include "dem/particle_index.h"
 
+#include "dem/cell_grid.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,15 +17,10 @@ bool ParticleIndex::validFor(const NeighborList& list, std::size_t particleCount
 
 void ParticleIndex::coordinates(const Vec3& x, std::size_t* c) const
 {
-    // Beyond the grid (or not finite): its nearest cell along that axis. Clamping moves two
-    // points closer along each axis, so two points within one cell of each other stay in
-    // neighbouring cells.
-    const Real v[3] = {x.x - origin_.x, x.y - origin_.y, x.z - origin_.z};
-    for (int k = 0; k < 3; ++k)
-    {
-        const Real q = v[k] / cell_;
-        c[k] = q >= 0 && q < Real(n_[k]) ? static_cast<std::size_t>(q) : q >= Real(n_[k]) ? n_[k] - 1 : 0;
-    }
+    // (Beyond the grid or not finite: its nearest cell along that axis, cell_grid.h.)
+    c[0] = cellCoordinate(x.x, origin_.x, cell_, n_[0]);
+    c[1] = cellCoordinate(x.y, origin_.y, cell_, n_[1]);
+    c[2] = cellCoordinate(x.z, origin_.z, cell_, n_[2]);
 }
 
 void ParticleIndex::build(const ParticleStore& particles, const NeighborList& list, Real newRadius,

@@ -1,6 +1,7 @@
 #include "dem/periodic.h"
 
 #include "core/error.h"
+#include "dem/cell_grid.h"
 #include "dem/neighbor_list.h"
 #include "dem/pair_kernel.h"
 #include "dem/world.h"
@@ -146,12 +147,7 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
         cell *= 1.5;
     }
     const auto coordinate = [&](const Vec3& x, std::size_t s)
-    {
-        const Real c = (component(x, static_cast<int>(s)) - origin[s]) / cellEdge[s];
-        return c >= 0 && c < Real(count[s]) ? static_cast<std::size_t>(c)
-               : c >= Real(count[s])        ? count[s] - 1
-                                            : 0;
-    };
+    { return cellCoordinate(component(x, static_cast<int>(s)), origin[s], cellEdge[s], count[s]); };
     const std::size_t cells = count[0] * count[1] * count[2];
     std::vector<std::uint32_t> cellStart(cells + 1, 0), cellOf(n), cellParticles(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -161,11 +157,10 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
                                                coordinate(x, 0));
         ++cellStart[cellOf[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c)
-        cellStart[c + 1] += cellStart[c];
-    std::vector<std::uint32_t> fill(cellStart.begin(), cellStart.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-        cellParticles[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+    sortByCell(
+        cellOf, 1, [](std::size_t) { return 0; },
+        [&](int) -> std::vector<std::uint32_t>& { return cellStart; },
+        [&](int) { return cellParticles.data(); });
 
     // For each i, the pairs (i, j > i) through an image: the 27 neighbouring cells, each offset
     // along an axis a (cell, shift) pair; a cell reached across a periodic face holds j's images
