@@ -46,8 +46,9 @@
 // 0.02. The single fill that passed before (seed 5: C = 0.590) was one draw from that spread.
 // Ruled out as the cause: friction, the silo's width, stiffness (above), the polydisperse mean
 // diameter (it enters k, not C). rho_b is the poured bulk density, as in Beverloo's correlation;
-// the region just above the orifice is 20-25 % less dense (printed). Not examined: restitution,
-// and the bias of a two-parameter fit over a narrow range of orifices (Mankoc et al. 2007).
+// the region just above the orifice is 20-27 % less dense (printed). Restitution e = 0.9 instead
+// of 0.5 (one run): C = 0.497 +- 0.017, k = 1.52: not the restitution either. Not examined: the
+// bias of a two-parameter fit over a narrow range of orifices (Mankoc et al. 2007).
 #include "bulk.h"
 #include "dem/walls/triangle_mesh.h"
 
