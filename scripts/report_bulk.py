@@ -17,10 +17,11 @@ def beverloo_figure(out_dir, case, named):
         return None
     header, data = named["beverloo_rate"]
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
-    ratio, rate, fit = (column(header, data, c) for c in ("D_over_d", "W", "W_fit"))
-    left.plot(ratio, 1e3 * rate, "o", label="measured W (0.1-0.45 s after opening)")
+    ratio, rate, error, fit = (column(header, data, c) for c in ("D_over_d", "W", "W_error", "W_fit"))
+    left.errorbar(ratio, 1e3 * rate, yerr=None if error is None else 1e3 * error, fmt="o", capsize=3,
+                  label="W (0.1-0.45 s after opening): mean of the fills ± standard error")
     order = np.argsort(ratio)
-    left.plot(ratio[order], 1e3 * fit[order], "-", label="Beverloo, fitted C and k")
+    left.plot(ratio[order], 1e3 * fit[order], "-", label="Beverloo, C and k of the weighted fit")
     left.set_xlabel("orifice D / d")
     left.set_ylabel("discharge rate W [g/s]")
     left.grid(True, lw=0.3)
@@ -31,7 +32,7 @@ def beverloo_figure(out_dir, case, named):
         for k, name in enumerate(mh[1:], start=1):
             ok = ~np.isnan(md[:, k])
             right.plot(t[ok], 1e3 * md[ok, k], lw=1.2, label=name.replace("m_D", "D/d = "))
-        right.set_xlabel("time after opening [s]")
+        right.set_xlabel("time after opening [s] (first fill)")
         right.set_ylabel("discharged mass [g]")
         right.grid(True, lw=0.3)
         right.legend(fontsize=8)

@@ -7,8 +7,10 @@
 #include "io/toml_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <ctime>
 #include <limits>
 
 namespace veridem::verify
@@ -134,6 +136,58 @@ LineFit fitLine(const std::vector<Real>& x, const std::vector<Real>& y)
     fit.intercept = my - fit.slope * mx;
     fit.r2 = syy > 0 ? sxy * sxy / (sxx * syy) : 1;
     return fit;
+}
+
+WeightedLineFit fitLineWeighted(const std::vector<Real>& x, const std::vector<Real>& y,
+                                const std::vector<Real>& sigma)
+{
+    // The normal equations of the weighted fit (e.g. Press et al., Numerical Recipes, sec. 15.2).
+    Real s = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < x.size(); ++i)
+    {
+        if (!(sigma[i] > 0))
+            throw InputError("fitLineWeighted: point " + std::to_string(i) + " has a standard error " +
+                             std::to_string(sigma[i]) + ", expected > 0");
+        const Real w = 1 / (sigma[i] * sigma[i]);
+        s += w;
+        sx += w * x[i];
+        sy += w * y[i];
+        sxx += w * x[i] * x[i];
+        sxy += w * x[i] * y[i];
+    }
+    const Real delta = s * sxx - sx * sx;
+    WeightedLineFit fit;
+    fit.slope = (s * sxy - sx * sy) / delta;
+    fit.intercept = (sxx * sy - sx * sxy) / delta;
+    fit.slopeVariance = s / delta;
+    fit.interceptVariance = sxx / delta;
+    fit.covariance = -sx / delta;
+    for (std::size_t i = 0; i < x.size(); ++i)
+    {
+        const Real r = (y[i] - fit.slope * x[i] - fit.intercept) / sigma[i];
+        fit.chi2 += r * r;
+    }
+    return fit;
+}
+
+MeanWithError meanWithError(const std::vector<Real>& v)
+{
+    MeanWithError m;
+    m.mean = meanOf(v);
+    if (v.size() < 2)
+        return m;
+    Real sum = 0;
+    for (const Real a : v)
+        sum += (a - m.mean) * (a - m.mean);
+    m.standardError = std::sqrt(sum / Real(v.size() - 1) / Real(v.size()));
+    return m;
+}
+
+Real threadCpuSeconds()
+{
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return Real(t.tv_sec) + 1e-9 * Real(t.tv_nsec);
 }
 
 Real meanOf(const std::vector<Real>& v, std::size_t from, std::size_t to)

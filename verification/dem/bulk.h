@@ -61,6 +61,32 @@ struct LineFit
 };
 LineFit fitLine(const std::vector<Real>& x, const std::vector<Real>& y);
 
+/// Weighted least-squares line y = slope x + intercept, each point weighted by 1/sigma^2 (sigma
+/// its standard error, > 0), with the parameters' variances and covariance (from the sigmas alone,
+/// not rescaled by the misfit) and the misfit chi^2 = sum ((y - line) / sigma)^2.
+struct WeightedLineFit
+{
+    Real slope = 0;
+    Real intercept = 0;
+    Real slopeVariance = 0;
+    Real interceptVariance = 0;
+    Real covariance = 0;
+    Real chi2 = 0;
+};
+WeightedLineFit fitLineWeighted(const std::vector<Real>& x, const std::vector<Real>& y,
+                                const std::vector<Real>& sigma);
+
+/// Mean of v and its standard error (sample standard deviation / sqrt(n); 0 if n < 2).
+struct MeanWithError
+{
+    Real mean = 0;
+    Real standardError = 0;
+};
+MeanWithError meanWithError(const std::vector<Real>& v);
+
+/// CPU time [s] of the calling thread (a case runs on one thread).
+Real threadCpuSeconds();
+
 /// Mean of v[from, to).
 Real meanOf(const std::vector<Real>& v, std::size_t from = 0, std::size_t to = SIZE_MAX);
 
