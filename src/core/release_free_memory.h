@@ -5,6 +5,8 @@
 #include <malloc.h>
 #endif
 
+#include <cstddef>
+
 namespace veridem
 {
 
@@ -20,6 +22,12 @@ namespace veridem
 /// re-touching the trimmed pages at the next rebuild: the 20k gas, which rebuilds every ~50 steps,
 /// takes 2.6 % more CPU time (three alternated pairs); the drum < 0.5 % (perf). Does nothing on
 /// other C libraries.
+/// The fewest particles for which a rebuild of the contact lists hands its freed memory back
+/// (world.cpp): below, the rebuild's temporaries are under ~1 MB (a few hundred bytes a particle),
+/// while each trim walks the whole heap; a one-ball verification case that rebuilt often spent
+/// most of its time in malloc_trim, contending with the cases beside it for the arena locks.
+inline constexpr std::size_t kTrimAfterRebuildParticles = 4096;
+
 inline void releaseFreeMemory()
 {
 #if defined(__GLIBC__)

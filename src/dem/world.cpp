@@ -119,7 +119,11 @@ Real pairTouchReach(const World& world);
         world.periodicPairs.handOver(world.neighbors, world.pairHistory);
     world.neighbors.rebuild(world.particles, world.pairHistory);
     world.wallContacts.rebuild(world.particles, world.walls, world.neighbors.skin, world.wallHistory);
-    releaseFreeMemory(); // the rebuild's temporaries, out of the resident set
+    // The rebuild's temporaries out of the resident set, in worlds where they weigh: malloc_trim
+    // walks the whole process heap (every thread's arena, shared by verification cases run side
+    // by side), and a world of a few particles rebuilds often and frees little.
+    if (world.particles.size() >= kTrimAfterRebuildParticles)
+        releaseFreeMemory();
 }
 
 /// Holds the frozen particles: back to their positions (and position rows) with zero velocity and
