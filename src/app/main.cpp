@@ -2,6 +2,7 @@
 //   veridem run SCENE [--out DIR] [--threads N] [--restart FILE] [--stop-at-step N]
 //                                                  run a scene file (DEM 3D or FEM/DEM 2D)
 //   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR] [--jobs N]
+#include "app/mpi_launch.h"
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "exec/thread_pool.h"
@@ -10,11 +11,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #ifdef VERIDEM_HAVE_FDEM
@@ -49,6 +53,9 @@ int runCommand(const veridem::app::RunOptions& options)
             type = *t;
     if (type == "dem")
         return veridem::app::runDemScene(scene, options);
+    if (options.ranks && options.ranks->size() > 1)
+        throw veridem::InputError(options.sceneFile + ": [simulation] type \"" + type +
+                                  "\" runs in one process; only \"dem\" scenes run on several MPI ranks");
 #ifdef VERIDEM_HAVE_FDEM
     if (type == "fdem2d")
         return veridem::fdem::runScene(scene, options.sceneFile, options.outDir, options.progress,
@@ -59,24 +66,38 @@ int runCommand(const veridem::app::RunOptions& options)
                               ": [simulation] 'type' must be \"dem\" or \"fdem2d\" (got \"" + type + "\")");
 }
 
-/// Refuses to run as one of several MPI processes (`mpirun -np N veridem ...`): each would run the
-/// whole scene and write the same files. MPI launchers tell each process the job's size (OpenMPI:
-/// OMPI_COMM_WORLD_SIZE; MPICH, Intel MPI and other PMI launchers: PMI_SIZE).
-void refuseSeveralMpiProcesses()
+/// Reports an error and returns its exit code. As one of several MPI ranks, the error may be this
+/// rank's alone (the others would wait for it in their next collective), so the job is ended; a
+/// rank other than the first waits a moment first, so that an error every rank meets (the scene's)
+/// is printed once, by the first rank, whose abort ends the others.
+int fail(const veridem::app::MpiLaunch* launch, int code, const char* what, const char* message)
 {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
-        if (const char* value = std::getenv(name); value && std::atoi(value) > 1)
-            throw veridem::InputError(
-                std::string("started as one of ") + value + " MPI processes (" + name +
-                "): veridem runs a scene in one process (the MPI domain decomposition is not built "
-                "yet), so each process would run the whole scene and write the same files; run one "
-                "process, with --threads N for the cores");
+    if (launch && launch->size() > 1)
+    {
+        if (launch->rank() != 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        std::fprintf(stderr, "veridem: rank %d of %d: %s: %s\n", launch->rank(), launch->size(), what,
+                     message);
+        std::fflush(stderr);
+        launch->abort(code);
+    }
+    std::fprintf(stderr, "veridem: %s: %s\n", what, message);
+    return code;
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
+    std::unique_ptr<veridem::app::MpiLaunch> launch;
+    try
+    {
+        launch = std::make_unique<veridem::app::MpiLaunch>(argc, argv);
+    }
+    catch (const veridem::InputError& e)
+    {
+        return fail(nullptr, 2, "error", e.what());
+    }
     CLI::App app{"veridem: verified DEM and FEM/DEM contact physics (SI units throughout)"};
     app.require_subcommand(1);
 
@@ -100,7 +121,11 @@ int main(int argc, char** argv)
                            ->check(CLI::PositiveNumber);
     // Default: every CPU this process may use. A waiting thread blocks after a few microseconds
     // (exec/thread_pool.h), so a second thread does not slow a run down on a busy machine.
+    // As one of several MPI ranks on a node whose CPUs it may all use (not bound to some): its share.
     int threads = veridem::exec::availableCpus();
+    if (const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE"); local && std::atoi(local) > 1)
+        if (threads >= std::atoi(local))
+            threads /= std::atoi(local);
     run->add_option("--threads", threads,
                     "threads of the DEM loops (default: the CPUs this process may run on; the same "
                     "results on any count)")
@@ -127,9 +152,12 @@ int main(int argc, char** argv)
 
     try
     {
-        refuseSeveralMpiProcesses();
+        if (launch->size() > 1 && !run->parsed())
+            throw veridem::InputError("`veridem verify` runs in one process; under mpirun, use `veridem run "
+                                      "SCENE` (the MPI checks are in the test suite: ctest -L mpi)");
         if (run->parsed())
         {
+            runOptions.ranks = launch->collective();
             runOptions.outDir = outDir;
             runOptions.progress = !quiet;
             if (stopOption->count() > 0)
@@ -166,24 +194,25 @@ int main(int argc, char** argv)
         }
         return code;
     }
-    catch (const veridem::InputError& e)
-    {
-        std::fprintf(stderr, "veridem: error: %s\n", e.what());
-        return 2;
-    }
-    catch (const veridem::OutputError& e) // a failed write: the run stops, what was written before stays
-    {
-        std::fprintf(stderr, "veridem: output failed: %s\n", e.what());
-        return 4;
-    }
-    catch (const veridem::SimulationError& e)
+    catch (const veridem::app::RanksStopped& e) // every rank stopped at the same step; the first reports
     {
         std::fprintf(stderr, "veridem: simulation stopped: %s\n", e.what());
         return 3;
     }
+    catch (const veridem::InputError& e)
+    {
+        return fail(launch.get(), 2, "error", e.what());
+    }
+    catch (const veridem::OutputError& e) // a failed write: the run stops, what was written before stays
+    {
+        return fail(launch.get(), 4, "output failed", e.what());
+    }
+    catch (const veridem::SimulationError& e)
+    {
+        return fail(launch.get(), 3, "simulation stopped", e.what());
+    }
     catch (const std::exception& e) // anything else (a file system error, memory): a message, not an abort
     {
-        std::fprintf(stderr, "veridem: error: %s\n", e.what());
-        return 1;
+        return fail(launch.get(), 1, "error", e.what());
     }
 }

@@ -4,6 +4,8 @@
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "dem/time_step.h"
+#include "dist/rank_gather.h"
+#include "dist/rank_step.h"
 #include "exec/thread_pool.h"
 #include "io/contact_output.h"
 #include "io/dem_checkpoint.h"
@@ -30,17 +32,18 @@ namespace veridem::app
 namespace
 {
 
-void checkTimeStep(const io::DemScene& scene, const RunOptions& options)
+void checkTimeStep(const io::DemScene& scene, const RunOptions& options, bool speak)
 {
     const dem::TimeStepEstimate estimate =
         scene.flow.inserters.empty()
             ? dem::estimateTimeStep(scene.world, scene.characteristicSpeed)
             : dem::estimateTimeStep(io::timeStepProbe(scene.world, scene.flow), scene.characteristicSpeed);
-    std::fprintf(stderr,
-                 "veridem: dt = %.4g s; stability limit %.4g s (%s); shortest contact time %.4g s, "
-                 "recommended dt <= tc/50 = %.4g s\n",
-                 scene.dt, estimate.critical, estimate.limitedBy.c_str(), estimate.contactTime,
-                 estimate.recommended);
+    if (speak)
+        std::fprintf(stderr,
+                     "veridem: dt = %.4g s; stability limit %.4g s (%s); shortest contact time %.4g s, "
+                     "recommended dt <= tc/50 = %.4g s\n",
+                     scene.dt, estimate.critical, estimate.limitedBy.c_str(), estimate.contactTime,
+                     estimate.recommended);
     if (scene.dt > estimate.critical)
     {
         std::ostringstream s;
@@ -49,9 +52,10 @@ void checkTimeStep(const io::DemScene& scene, const RunOptions& options)
           << " s (tc/50)";
         if (!options.allowUnstableTimeStep)
             throw InputError(s.str() + ", or --force-dt to run anyway");
-        std::fprintf(stderr, "veridem: warning: %s; running anyway (--force-dt)\n", s.str().c_str());
+        if (speak)
+            std::fprintf(stderr, "veridem: warning: %s; running anyway (--force-dt)\n", s.str().c_str());
     }
-    else if (scene.dt > estimate.contactTime / 20)
+    else if (speak && scene.dt > estimate.contactTime / 20)
         std::fprintf(
             stderr,
             "veridem: warning: dt is more than tc/20: contacts are resolved by fewer than 20 steps\n");
@@ -122,14 +126,36 @@ void printRollingFrictionConversion(const dem::World& world)
     }
 }
 
+/// Refuses what does not run on several MPI ranks yet, naming it.
+void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
+{
+    const auto refuse = [&](const std::string& what)
+    {
+        throw InputError(options.sceneFile + ": " + what +
+                         " does not run on several MPI ranks yet; run this scene " +
+                         "in one process (with --threads N for the cores)");
+    };
+    if (!scene.flow.empty())
+        refuse("[[insert]] and [[outlet]] (particles that come and go)");
+    if (scene.world.domain.any())
+        refuse("a periodic boundary");
+    if (scene.measurements.energy)
+        refuse("[output] energy = true (the energy ledger)");
+}
+
 } // namespace
 
 int runDemScene(const toml::table& table, const RunOptions& options)
 {
     io::DemScene scene = io::readDemScene(table, options.sceneFile);
     dem::World& world = scene.world;
-    checkTimeStep(scene, options);
-    printRollingFrictionConversion(world);
+    const bool severalRanks = options.ranks && options.ranks->size() > 1;
+    const bool root = !severalRanks || options.ranks->rank() == 0; // prints and writes the files
+    if (severalRanks)
+        refuseOnRanks(scene, options);
+    checkTimeStep(scene, options, root);
+    if (root)
+        printRollingFrictionConversion(world);
     const std::uint64_t sceneHash = io::sceneFileHash(options.sceneFile);
 
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
@@ -171,15 +197,23 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             throw InputError("checkpoint '" + options.restartFile + "' is at step " +
                              std::to_string(world.stepCount) + ", after the scene's last step " +
                              std::to_string(totalSteps));
-        std::fprintf(stderr, "veridem: restarting from '%s' at step %llu (t = %.9g s)\n",
-                     options.restartFile.c_str(), static_cast<unsigned long long>(world.stepCount),
-                     world.time);
+        if (root)
+            std::fprintf(stderr, "veridem: restarting from '%s' at step %llu (t = %.9g s)\n",
+                         options.restartFile.c_str(), static_cast<unsigned long long>(world.stepCount),
+                         world.time);
     }
     else
     {
         dem::prepare(world);
         if (!flow.empty())
             flow.apply(world, scene.dt); // (step 0 is a flow step)
+    }
+    // Several ranks: each keeps its region's particles and their ghosts (dist/rank_step.h).
+    std::optional<dist::RankStep> rankStep;
+    if (severalRanks)
+    {
+        rankStep.emplace(*options.ranks, options.rebalanceEvery);
+        rankStep->distribute(world);
     }
     world.wallContacts.setRecordLoads(wallLoads);
     if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
@@ -192,40 +226,60 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         world.observer = &ledger;
     }
 
-    io::ParticleRecorder recorder(options.outDir, scene.writeVtk, scene.vtkFormat,
-                                  resume ? &*resume : nullptr);
-    io::ThermoRecorder thermo(options.outDir, thermoBytes, measure.energy ? &ledger : nullptr);
+    // The files are written by the first rank only, from the whole world gathered (dist/rank_gather.h).
+    std::optional<io::ParticleRecorder> recorder;
+    std::optional<io::ThermoRecorder> thermo;
     std::optional<io::ContactRecorder> contacts;
-    if (measure.contacts)
-        contacts.emplace(options.outDir, scene.vtkFormat,
-                         resume ? resume->frameTimes : std::vector<double>{});
     std::optional<io::RegionRecorder> region;
-    if (measure.region)
-        region.emplace(options.outDir, measure.regionMin, measure.regionMax, regionBytes);
     std::optional<io::WallLoadRecorder> walls;
-    if (wallLoads)
-        walls.emplace(options.outDir, wallBytes);
     std::optional<io::OutletRecorder> outletRecorder;
-    if (outlets)
-        outletRecorder.emplace(options.outDir, outletBytes);
+    if (root)
+    {
+        recorder.emplace(options.outDir, scene.writeVtk, scene.vtkFormat, resume ? &*resume : nullptr);
+        thermo.emplace(options.outDir, thermoBytes, measure.energy ? &ledger : nullptr);
+        if (measure.contacts)
+            contacts.emplace(options.outDir, scene.vtkFormat,
+                             resume ? resume->frameTimes : std::vector<double>{});
+        if (measure.region)
+            region.emplace(options.outDir, measure.regionMin, measure.regionMax, regionBytes);
+        if (wallLoads)
+            walls.emplace(options.outDir, wallBytes);
+        if (outlets)
+            outletRecorder.emplace(options.outDir, outletBytes);
+    }
+    // The world the outputs and checkpoints read: this one, or on several ranks the whole world
+    // gathered on the first (nullopt on the others). Collective.
+    const auto wholeWorld = [&] { return dist::gatherWorld(world, *rankStep); };
     const auto recordOutputs = [&]
     {
-        recorder.record(world);
-        const std::vector<dem::ContactRecord> now = dem::evaluateContacts(world, 0.0);
-        thermo.record(world, now);
+        std::optional<dem::World> gathered;
+        if (rankStep && !(gathered = wholeWorld()))
+            return;
+        const dem::World& w = gathered ? *gathered : world;
+        recorder->record(w);
+        const std::vector<dem::ContactRecord> now = dem::evaluateContacts(w, 0.0);
+        if (gathered) // the step's contact counts, as one process counts them
+        {
+            gathered->health.touchingPairs = gathered->health.touchingWalls = 0;
+            for (const dem::ContactRecord& c : now)
+                ++(c.wall ? gathered->health.touchingWalls : gathered->health.touchingPairs);
+        }
+        thermo->record(w, now);
         if (contacts)
-            contacts->record(world, now);
+            contacts->record(w, now);
         if (region)
-            region->record(world, now);
+            region->record(w, now);
         if (walls)
-            walls->record(world);
+            walls->record(w);
         if (outletRecorder)
-            outletRecorder->record(world.time, flow.outlets);
+            outletRecorder->record(w.time, flow.outlets);
     };
     const auto closeOutputs = [&]
     {
-        recorder.close();
-        thermo.close();
+        if (!root)
+            return;
+        recorder->close();
+        thermo->close();
         if (region)
             region->close();
         if (walls)
@@ -238,15 +292,18 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     const std::filesystem::path checkpointPath = options.outDir / "checkpoint.bin";
     const auto writeCheckpoint = [&]
     {
-        std::vector<std::uint64_t> bytes = {recorder.csvBytes(), thermo.size()};
+        std::optional<dem::World> gathered;
+        if (rankStep && !(gathered = wholeWorld()))
+            return;
+        std::vector<std::uint64_t> bytes = {recorder->csvBytes(), thermo->size()};
         if (region)
             bytes.push_back(region->size());
         if (walls)
             bytes.push_back(walls->size());
         if (outletRecorder)
             bytes.push_back(outletRecorder->size());
-        io::writeDemCheckpoint(checkpointPath, world, sceneHash, {recorder.frameTimes(), bytes, 0},
-                               ledgerState, &flow);
+        io::writeDemCheckpoint(checkpointPath, gathered ? *gathered : world, sceneHash,
+                               {recorder->frameTimes(), bytes, 0}, ledgerState, &flow);
     };
     io::stopOnSignals();
 
@@ -272,27 +329,42 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         const auto runStart = std::chrono::steady_clock::now();
         const std::uint64_t done = dem::advance(world, scene.dt, runEnd - s, scene.maxOverlapFraction);
         s += done;
-        particleSteps += double(done) * double(world.particles.size()); // (the count changes with a flow)
+        // (the count changes with a flow; on several ranks, this rank's own particles)
+        particleSteps += double(done) * double(rankStep ? rankStep->owned() : world.particles.size());
         if (s < runEnd || !world.health.finite || world.health.maxOverlapRatio > scene.maxOverlapFraction)
         {
-            std::ostringstream m;
-            // (particles named by their stable id, as in the output)
+            // (particles named by their stable id, as in the output; on several ranks the health is
+            // every rank's, so all stop here and the first reports)
             const auto id = [&](std::uint32_t i)
             { return i < world.particles.size() ? world.particles.id[i] : i; };
-            m << "step " << world.stepCount << " (t = " << world.time << " s), particle ";
+            const std::uint32_t failed =
+                rankStep ? rankStep->failedParticleId(world)
+                         : id(world.health.finite ? world.health.worstParticle : world.health.firstNonFinite);
+            if (!root)
+                return 3;
+            std::ostringstream m;
+            m << "step " << world.stepCount << " (t = " << world.time << " s), particle " << failed;
             if (!world.health.finite)
-                m << id(world.health.firstNonFinite)
-                  << ": position or velocity is not finite (NaN or infinity)";
+                m << ": position or velocity is not finite (NaN or infinity)";
             else
-                m << id(world.health.worstParticle) << ": overlap is " << world.health.maxOverlapRatio
+                m << ": overlap is " << world.health.maxOverlapRatio
                   << " of the radius (limit max_overlap_fraction = " << scene.maxOverlapFraction
                   << "): the time step is too large for the stiffness or the particles are too fast";
-            m << "; the " << recorder.framesWritten() << " outputs written so far are in "
+            m << "; the " << recorder->framesWritten() << " outputs written so far are in "
               << options.outDir.string();
+            if (rankStep)
+                throw RanksStopped(m.str());
             throw SimulationError(m.str());
         }
         const auto now = std::chrono::steady_clock::now();
-        const double runSeconds = std::chrono::duration<double>(now - runStart).count();
+        double runSeconds = std::chrono::duration<double>(now - runStart).count();
+        // Several ranks agree on the next run's length and on a stop (a signal reaches each rank
+        // at its own moment): the largest of their values.
+        double agreed[2] = {runSeconds, double(io::stopSignal())};
+        if (rankStep)
+            options.ranks->max(agreed);
+        runSeconds = agreed[0];
+        const int signal = static_cast<int>(agreed[1]);
         if (runSeconds < 0.01 && chunk < kMaxChunk)
             chunk *= 2;
         else if (runSeconds > 0.05 && chunk > 1)
@@ -307,13 +379,14 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             writeCheckpoint();
             checkpointed = true;
         }
-        const int signal = io::stopSignal();
         const bool stop = signal || (options.stopAtStep && s == *options.stopAtStep);
         if (stop && !checkpointed)
             writeCheckpoint();
         if (stop && s < totalSteps)
         {
             closeOutputs();
+            if (!root)
+                return signal ? io::kInterruptedBase + signal : 0;
             if (options.progress)
                 std::fprintf(stderr, "\r%*s\r", 78, "");
             std::fprintf(stderr,
@@ -325,7 +398,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                          options.outDir.string().c_str());
             return signal ? io::kInterruptedBase + signal : 0;
         }
-        if (options.progress && std::chrono::duration<double>(now - lastProgress).count() > 1)
+        if (root && options.progress && std::chrono::duration<double>(now - lastProgress).count() > 1)
         {
             const double elapsed = std::chrono::duration<double>(now - start).count();
             if (elapsed > 2)
@@ -343,14 +416,29 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     closeOutputs();
     const std::uint64_t stepsRun = totalSteps - firstStep;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::uint64_t counts[2] = {rankStep ? rankStep->owned() : world.particles.liveCount(),
+                               static_cast<std::uint64_t>(particleSteps)};
+    if (rankStep)
+        options.ranks->sum(counts);
+    if (!root)
+        return 0;
     if (options.progress)
         std::fprintf(stderr, "\r%*s\r", 78, "");
-    std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %zu particles, %zu outputs in %s\n",
-                static_cast<unsigned long long>(stepsRun), scene.dt, world.time, world.particles.liveCount(),
-                recorder.framesWritten(), options.outDir.string().c_str());
-    std::printf(
-        "veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour rebuilds\n",
-        wall, exec::threads(), wall > 0 ? particleSteps / wall : 0.0, world.neighbors.rebuildCount());
+    std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %llu particles, %zu outputs in %s\n",
+                static_cast<unsigned long long>(stepsRun), scene.dt, world.time,
+                static_cast<unsigned long long>(counts[0]), recorder->framesWritten(),
+                options.outDir.string().c_str());
+    if (rankStep)
+        std::printf(
+            "veridem: wall time %.3f s on %d MPI ranks of up to %d thread(s), %.3g particle-steps/s, %zu "
+            "neighbour rebuilds, regions cut %llu times\n",
+            wall, options.ranks->size(), exec::threads(), wall > 0 ? double(counts[1]) / wall : 0.0,
+            world.neighbors.rebuildCount(), static_cast<unsigned long long>(rankStep->cuts()));
+    else
+        std::printf("veridem: wall time %.3f s on up to %d thread(s), %.3g particle-steps/s, %zu neighbour "
+                    "rebuilds\n",
+                    wall, exec::threads(), wall > 0 ? particleSteps / wall : 0.0,
+                    world.neighbors.rebuildCount());
     return 0;
 }
 

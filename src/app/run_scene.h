@@ -1,6 +1,9 @@
 // Scene runners called by `veridem run`. The scene's [simulation] type picks one.
 #pragma once
 
+#include "core/error.h"
+#include "dist/collective.h"
+
 #include <toml++/toml.h>
 
 #include <cstdint>
@@ -20,6 +23,16 @@ struct RunOptions
     std::string restartFile;                 // --restart: continue from this checkpoint (empty: none)
     std::optional<std::uint64_t> stopAtStep; // --stop-at-step: stop after this step (counted from
                                              // the scene's start) with a checkpoint, as on SIGINT
+    const dist::Collective* ranks = nullptr; // the MPI job's ranks (mpirun); null: one process
+    std::uint64_t rebalanceEvery = 10;       // exchanges of particles between cuts of the regions
+};
+
+/// A stop every rank of an MPI job reached at the same step (a blow-up): the first rank reports it,
+/// the others end with its exit code and no message.
+class RanksStopped : public SimulationError
+{
+  public:
+    using SimulationError::SimulationError;
 };
 
 /// 3D sphere DEM scene (type = "dem"). Returns the exit code.

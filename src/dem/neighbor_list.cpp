@@ -190,9 +190,15 @@ void NeighborList::renameParticles(const std::vector<std::uint32_t>& newIndex, C
         if (formed)
             renamed.formed[a] = history.formed[k.from];
     }
-    activeFirst.swap(newFirst);
-    activeSecond.swap(newSecond);
-    history = std::move(renamed);
+    adoptCandidates(std::move(newFirst), std::move(newSecond), history, std::move(renamed));
+}
+
+void NeighborList::adoptCandidates(std::vector<std::uint32_t> newFirst, std::vector<std::uint32_t> newSecond,
+                                   ContactHistoryStore& history, ContactHistoryStore&& adopted)
+{
+    activeFirst = std::move(newFirst);
+    activeSecond = std::move(newSecond);
+    history = std::move(adopted);
     // The slots name old particles: the rebuild that follows matches the candidates by (i, j).
     first.clear();
     second.clear();

@@ -131,6 +131,12 @@ class NeighborList
     /// which must follow, carries it by key.
     static constexpr std::uint32_t kGone = 0xffffffffu;
     void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
+    /// Replaces the candidates by `first`[a] < `second`[a], sorted by (i, j) and without repeats,
+    /// with their history `history` (entry a for candidate a), for particles renumbered between
+    /// steps (renameParticles; an MPI rank's particles after an exchange, dist/rank_history.h). The
+    /// rebuild() that must follow carries the history by key.
+    void adoptCandidates(std::vector<std::uint32_t> first, std::vector<std::uint32_t> second,
+                         ContactHistoryStore& history, ContactHistoryStore&& adopted);
 
     /// Takes in the particles [from, particles.size()) appended between steps without a rebuild
     /// (dem/particle_changes.h, addInsertedParticles): they have no slots, and their motion is

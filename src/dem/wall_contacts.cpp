@@ -317,23 +317,33 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
         if (rolling)
             renamed.rolling[k] = history.rolling[kept[k].second];
     }
-    if (!meshNormal.empty()) // (a mesh group's slots stay together and in order: stable keys)
+    std::vector<Vec3> normals; // (a mesh group's slots stay together and in order: stable keys)
+    if (!meshNormal.empty())
     {
-        std::vector<Vec3> normals(kept.size());
+        normals.resize(kept.size());
         for (std::size_t k = 0; k < kept.size(); ++k)
             normals[k] = meshNormal[kept[k].second];
-        meshNormal.swap(normals);
     }
+    std::vector<std::uint32_t> flat;
     if (!meshFlat.empty())
     {
-        std::vector<std::uint32_t> flat(kept.size());
+        flat.resize(kept.size());
         for (std::size_t k = 0; k < kept.size(); ++k)
             flat[k] = meshFlat[kept[k].second];
-        meshFlat.swap(flat);
     }
-    particle.swap(newParticle);
-    wall.swap(newWall);
-    history = std::move(renamed);
+    adoptSlots(std::move(newParticle), std::move(newWall), std::move(normals), std::move(flat), history,
+               std::move(renamed));
+}
+
+void WallContactList::adoptSlots(std::vector<std::uint32_t> particles, std::vector<std::uint32_t> walls,
+                                 std::vector<Vec3> normals, std::vector<std::uint32_t> flat,
+                                 ContactHistoryStore& history, ContactHistoryStore&& adopted)
+{
+    particle = std::move(particles);
+    wall = std::move(walls);
+    meshNormal = std::move(normals);
+    meshFlat = std::move(flat);
+    history = std::move(adopted);
     start.clear();
     meshTriangleStart.clear(); // (the rebuild that follows makes them again)
     meshTriangles.clear();

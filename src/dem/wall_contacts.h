@@ -140,6 +140,14 @@ class WallContactList
     /// particle p is now newIndex[p], or gone if NeighborList::kGone. The slots keep their history
     /// under the new (particle, wall), sorted again; the rebuild() that must follow carries it.
     void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
+    /// Replaces the slots by (`particles`[k], `walls`[k]), sorted by that key (a mesh group's
+    /// slots together, in order), with their mesh normals and flat triangles (both empty unless
+    /// some wall is a mesh) and their history `adopted`, for particles renumbered between steps
+    /// (renameParticles; an MPI rank's particles after an exchange). The rebuild() that must
+    /// follow carries the history.
+    void adoptSlots(std::vector<std::uint32_t> particles, std::vector<std::uint32_t> walls,
+                    std::vector<Vec3> normals, std::vector<std::uint32_t> flat, ContactHistoryStore& history,
+                    ContactHistoryStore&& adopted);
 
     /// Takes in the particles [from, particles.size()) appended between steps without a rebuild
     /// (dem/particle_changes.h, addInsertedParticles): their candidates, with fresh history, go

@@ -101,6 +101,8 @@ VERIDEM_HOT_INLINE bool contactListsNeedRebuild(World& world, const Motion& move
 
 Real pairTouchReach(const World& world);
 
+} // namespace
+
 [[gnu::noinline, gnu::cold]] void rebuildContactLists(World& world)
 {
     if (removeRetiredParticles(world)) // (dem/particle_changes.h: they leave the store here)
@@ -125,6 +127,9 @@ Real pairTouchReach(const World& world);
     if (world.particles.size() >= kTrimAfterRebuildParticles)
         releaseFreeMemory();
 }
+
+namespace
+{
 
 /// Holds the frozen particles: back to their positions (and position rows) with zero velocity and
 /// angular velocity, undoing what a kick or drift gave them (gravity, contact forces).
@@ -349,7 +354,10 @@ Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes
 {
     moveWalls(world.walls, dt); // wall motion to t+dt
     clock.lap(&StepProfile::integration);
-    if (contactListsNeedRebuild(world, moved)) // Verlet + wall lists, history merge
+    bool rebuild = contactListsNeedRebuild(world, moved);
+    if (world.ranks) [[unlikely]] // ghosts moved, the decision taken by all ranks, particles exchanged
+        rebuild = world.ranks->afterDrift(world, rebuild);
+    if (rebuild) // Verlet + wall lists, history merge
         rebuildContactLists(world);
     clock.lap(&StepProfile::neighbours);
     if (world.observer) [[unlikely]]
@@ -358,6 +366,8 @@ Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes
     clock.lap(&StepProfile::pairForces);
     // 4. cross-block and wall contacts, then v(t+dt) (and, if driftNext, v(t+3dt/2), x(t+2dt))
     const Motion next = finishParticles(world, dt, lanes, driftNext);
+    if (world.ranks) [[unlikely]]
+        world.ranks->combineHealth(world);
     clock.lap(&StepProfile::particlePass);
     world.time += dt;
     ++world.stepCount;
@@ -443,7 +453,7 @@ void step(World& world, Real dt)
         prepare(world);
 
     if (world.particles.size() == 1 && world.exec.fusedSteps && !world.exec.profile.enabled &&
-        !world.observer && world.fixedIndex.empty() && !world.particles.retired(0))
+        !world.observer && !world.ranks && world.fixedIndex.empty() && !world.particles.retired(0))
         return stepOneParticle(world, dt); // the stages below, the ball's state in registers
 
     StageClock clock(world.exec.profile);

@@ -119,6 +119,23 @@ struct PassSchedule
 
 struct World;
 
+/// A distributed run's part in the step (dist/rank_step.h): each MPI rank steps the particles it
+/// owns plus ghost copies of the others' near its region, and the step calls this at two points.
+/// The physics stays in the stages; this only moves particles and combines decisions.
+class RankExchange
+{
+  public:
+    virtual ~RankExchange() = default;
+    /// After the kick-drift and the wall motion: the ghosts take their owners' motion, and the
+    /// ranks decide together whether the contact lists are rebuilt this step (`rebuild`: this
+    /// rank's own criterion). Returns that decision; when true, the particles have been exchanged
+    /// (migrants with their contact history, ghosts made afresh) and step() rebuilds the lists.
+    virtual bool afterDrift(World& world, bool rebuild) = 0;
+    /// After the step: `health` becomes the health of all ranks' particles (the largest overlap,
+    /// finite everywhere), so that every rank stops at the same step.
+    virtual void combineHealth(World& world) = 0;
+};
+
 /// Sees every step (an energy ledger, energy_ledger.h): beforeForces in the step's state after
 /// the kick-drift, the wall motion and the contact lists' update, just before the force stage
 /// (x(t+dt), v(t+dt/2), the history of t); afterStep once the step is complete (v(t+dt)). With an
@@ -178,6 +195,7 @@ struct World
     Execution exec;
     bool prepared = false;
     StepObserver* observer = nullptr; // not owned; null: none
+    RankExchange* ranks = nullptr;    // not owned; null: one process holds every particle
 
     /// Adds a material; returns its id.
     std::uint32_t addMaterial(const Material& m);
@@ -197,6 +215,11 @@ void refreshFixedParticles(World& world);
 /// particles listed again, the touch reach for the materials now present, and both contact lists
 /// rebuilt (their history carried by key).
 void rebuildAfterParticleChange(World& world);
+
+/// Rebuilds the pair and wall contact lists at the current positions, the history carried by key:
+/// what a step does when some particle moved more than skin/2, and what follows an MPI exchange of
+/// particles (dist/rank_step.h).
+void rebuildContactLists(World& world);
 
 /// Advances the world by dt [s] with velocity Verlet (see world.cpp for the stages).
 void step(World& world, Real dt);

@@ -1,6 +1,7 @@
 #include "dist/halo.h"
 
 #include "core/error.h"
+#include "dist/bytes.h"
 #include "dist/exchange_plan.h"
 
 #include <cstring>
@@ -13,40 +14,6 @@ namespace veridem::dist
 namespace
 {
 
-struct Writer
-{
-    std::vector<std::byte>& out;
-    template <class T> void put(const T& value)
-    {
-        const auto* bytes = reinterpret_cast<const std::byte*>(&value);
-        out.insert(out.end(), bytes, bytes + sizeof value);
-    }
-    void put(const Vec3& v)
-    {
-        put(v.x);
-        put(v.y);
-        put(v.z);
-    }
-};
-
-struct Reader
-{
-    std::span<const std::byte> in;
-    std::size_t at = 0;
-    template <class T> T get()
-    {
-        T value;
-        std::memcpy(&value, in.data() + at, sizeof value);
-        at += sizeof value;
-        return value;
-    }
-    Vec3 vec3()
-    {
-        const Real x = get<Real>(), y = get<Real>(), z = get<Real>();
-        return {x, y, z};
-    }
-};
-
 void checkSize(std::size_t bytes, std::size_t record, std::size_t expected, const char* what, int from)
 {
     if (bytes != record * expected)
@@ -55,7 +22,7 @@ void checkSize(std::size_t bytes, std::size_t record, std::size_t expected, cons
                               " records of " + std::to_string(record));
 }
 
-void putRow(Writer& w, const dem::ParticleStore& p, std::size_t i)
+void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i)
 {
     w.put(p.id[i]);
     w.put(p.material[i]);
@@ -72,7 +39,7 @@ std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int fr
 {
     if (in.size() % kRowBytes != 0)
         checkSize(in.size(), kRowBytes, in.size() / kRowBytes, "particle rows", from);
-    Reader r{in};
+    ByteReader r{in};
     const std::size_t count = in.size() / kRowBytes;
     for (std::size_t k = 0; k < count; ++k)
     {
@@ -131,7 +98,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     for (int b = 0; b < ranks; ++b)
     {
         out[b].reserve(leave.migrate[b].size() * kRowBytes);
-        Writer w{out[b]};
+        ByteWriter w{out[b]};
         for (const std::uint32_t i : leave.migrate[b])
         {
             putRow(w, p, i);
@@ -160,7 +127,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     for (int b = 0; b < ranks; ++b)
     {
         out[b].reserve(near.ghost[b].size() * kRowBytes);
-        Writer w{out[b]};
+        ByteWriter w{out[b]};
         for (const std::uint32_t i : near.ghost[b])
             putRow(w, p, i);
         h.bytesSent += out[b].size();
@@ -178,6 +145,69 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     return h;
 }
 
+Halo splitWholeStore(dem::ParticleStore& p, const Decomposition& d, Real halo, int me)
+{
+    const int ranks = d.parts();
+    const std::size_t n = p.size();
+    std::vector<int> owner(n);
+    for (std::size_t i = 0; i < n; ++i)
+        owner[i] = d.owner(p.position[i]);
+    // Per rank a, the particles whose ghost `me` needs (a's owned ones, in store order); per rank
+    // b, the ones of `me` whose ghost b needs.
+    std::vector<std::vector<std::uint32_t>> ghostsFrom(ranks), sentTo(ranks);
+    std::vector<std::uint32_t> mine;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const auto index = static_cast<std::uint32_t>(i);
+        if (owner[i] == me)
+            mine.push_back(index);
+        d.forEachPartNear(p.position[i], p.radius[i] + halo,
+                          [&](int part)
+                          {
+                              if (part == owner[i])
+                                  return;
+                              if (part == me)
+                                  ghostsFrom[owner[i]].push_back(index);
+                              else if (owner[i] == me)
+                                  sentTo[part].push_back(index);
+                          });
+    }
+    Halo h;
+    h.owned = mine.size();
+    h.ghostFirst.assign(ranks, 0);
+    h.ghostCount.assign(ranks, 0);
+    std::vector<std::uint32_t> order = mine; // the new store's rows, by old index
+    for (int a = 0; a < ranks; ++a)
+    {
+        h.ghostFirst[a] = order.size();
+        h.ghostCount[a] = ghostsFrom[a].size();
+        order.insert(order.end(), ghostsFrom[a].begin(), ghostsFrom[a].end());
+    }
+    std::vector<std::uint32_t> newIndex(n, 0xffffffffu);
+    for (std::size_t k = 0; k < h.owned; ++k)
+        newIndex[order[k]] = static_cast<std::uint32_t>(k);
+    h.sent.resize(ranks);
+    for (int b = 0; b < ranks; ++b)
+        for (const std::uint32_t i : sentTo[b])
+            h.sent[b].push_back(newIndex[i]);
+    dem::ParticleStore kept;
+    kept.reserve(order.size());
+    for (const std::uint32_t i : order)
+    {
+        kept.add(p.position[i], p.velocity[i], p.angularVelocity[i], p.radius[i], 1.0, p.material[i]);
+        const std::size_t k = kept.size() - 1;
+        kept.force[k] = p.force[i];
+        kept.torque[k] = p.torque[i];
+        kept.mass[k] = p.mass[i];
+        kept.invMass[k] = p.invMass[i];
+        kept.invInertia[k] = p.invInertia[i];
+        kept.id[k] = p.id[i];
+        kept.fixed[k] = p.fixed[i];
+    }
+    p = std::move(kept);
+    return h;
+}
+
 void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
 {
     const int ranks = comm.size();
@@ -185,7 +215,7 @@ void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
     for (int b = 0; b < ranks; ++b)
     {
         out[b].reserve(h.sent[b].size() * kMotionBytes);
-        Writer w{out[b]};
+        ByteWriter w{out[b]};
         for (const std::uint32_t i : h.sent[b])
         {
             w.put(p.position[i]);
@@ -202,7 +232,7 @@ void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
         if (a == comm.rank())
             continue;
         checkSize(in[a].size(), kMotionBytes, h.ghostCount[a], "ghost motion", a);
-        Reader r{in[a]};
+        ByteReader r{in[a]};
         for (std::size_t k = 0; k < h.ghostCount[a]; ++k)
         {
             const std::size_t g = h.ghostFirst[a] + k;
@@ -221,7 +251,7 @@ void returnGhostForces(dem::ParticleStore& p, const Halo& h, const Collective& c
     for (int a = 0; a < ranks; ++a)
     {
         out[a].reserve(h.ghostCount[a] * kForceBytes);
-        Writer w{out[a]};
+        ByteWriter w{out[a]};
         for (std::size_t k = 0; k < h.ghostCount[a]; ++k)
         {
             const std::size_t g = h.ghostFirst[a] + k;
@@ -239,7 +269,7 @@ void returnGhostForces(dem::ParticleStore& p, const Halo& h, const Collective& c
         if (b == comm.rank())
             continue;
         checkSize(in[b].size(), kForceBytes, h.sent[b].size(), "ghost forces", b);
-        Reader r{in[b]};
+        ByteReader r{in[b]};
         for (const std::uint32_t i : h.sent[b])
         {
             const Vec3 f = r.vec3(), t = r.vec3();

@@ -62,6 +62,12 @@ struct Halo
 Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposition& d, Real halo,
                        const Collective& comm);
 
+/// The Halo of rank `me` when every rank holds every particle (all read the same scene or
+/// checkpoint): the store keeps the particles `d` gives this rank, in their order, then the ghosts
+/// of each other rank's, by rank and in the store's order: the layout exchangeParticles would
+/// make from that start, with no message. Rows are kept whole (force and torque included).
+Halo splitWholeStore(dem::ParticleStore& p, const Decomposition& d, Real halo, int me);
+
 /// Copies each ghost's position, velocity and angular velocity from its owner. Collective.
 void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm);
 

@@ -1,0 +1,177 @@
+#include "dist/rank_gather.h"
+
+#include "dist/bytes.h"
+#include "dist/halo.h"
+#include "dist/rank_history.h"
+
+#include <algorithm>
+#include <numeric>
+#include <span>
+#include <string>
+#include <tuple>
+
+namespace veridem::dist
+{
+
+namespace
+{
+
+/// Bytes of one gathered row: id, material, fixed, position, velocity, angular velocity, force,
+/// torque, radius, mass, 1/mass, 1/inertia.
+constexpr std::size_t kGatherRowBytes = 4 + 4 + 1 + 15 * 8 + 4 * 8;
+
+void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i)
+{
+    w.put(p.id[i]);
+    w.put(p.material[i]);
+    w.put(p.fixed[i]);
+    w.put(p.position[i]);
+    w.put(p.velocity[i]);
+    w.put(p.angularVelocity[i]);
+    w.put(Vec3(p.force[i]));
+    w.put(Vec3(p.torque[i]));
+    for (const Real v : {p.radius[i], p.mass[i], p.invMass[i], p.invInertia[i]})
+        w.put(v);
+}
+
+void getRow(ByteReader& r, dem::ParticleStore& p)
+{
+    const auto id = r.get<std::uint32_t>();
+    const auto material = r.get<std::uint32_t>();
+    const auto fixed = r.get<std::uint8_t>();
+    const Vec3 x = r.vec3(), v = r.vec3(), w = r.vec3(), f = r.vec3(), t = r.vec3();
+    const Real radius = r.get<Real>();
+    const std::size_t k = p.add(x, v, w, radius, 1.0, material);
+    p.mass[k] = r.get<Real>();
+    p.invMass[k] = r.get<Real>();
+    p.invInertia[k] = r.get<Real>();
+    p.force[k] = f;
+    p.torque[k] = t;
+    p.id[k] = id;
+    p.fixed[k] = fixed;
+}
+
+/// Sets each wall slot's recorded load from the entries (matched by particle, wall and place in
+/// the slot group).
+void setWallLoads(dem::World& world, std::span<const KeyedHistory> sources)
+{
+    dem::WallContactList& list = world.wallContacts;
+    list.setRecordLoads(true);
+    // (ids ascend in the store here, but need not be 0..N-1: a table sorted by id)
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> index(world.particles.size());
+    for (std::size_t i = 0; i < index.size(); ++i)
+        index[i] = {world.particles.id[i], static_cast<std::uint32_t>(i)};
+    std::sort(index.begin(), index.end());
+    using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>; // particle, wall, place
+    std::vector<std::pair<Key, const WallHistoryEntry*>> loads;
+    for (const KeyedHistory& h : sources)
+    {
+        std::uint32_t place = 0;
+        for (std::size_t e = 0; e < h.walls.size(); ++e)
+        {
+            const WallHistoryEntry& w = h.walls[e];
+            place = e > 0 && h.walls[e - 1].id == w.id && h.walls[e - 1].wall == w.wall ? place + 1 : 0;
+            const auto it = std::lower_bound(index.begin(), index.end(), std::pair{w.id, std::uint32_t{0}});
+            if (it != index.end() && it->first == w.id)
+                loads.push_back({Key{it->second, w.wall, place}, &w});
+        }
+    }
+    std::sort(loads.begin(), loads.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t k = 0, place = 0; k < list.size(); ++k)
+    {
+        place = k > 0 && list.particle[k - 1] == list.particle[k] && list.wall[k - 1] == list.wall[k]
+                    ? place + 1
+                    : 0;
+        const Key key{list.particle[k], list.wall[k], static_cast<std::uint32_t>(place)};
+        const auto it = std::lower_bound(loads.begin(), loads.end(), key,
+                                         [](const auto& a, const Key& b) { return a.first < b; });
+        if (it != loads.end() && it->first == key)
+        {
+            list.loadForce[k] = it->second->loadForce;
+            list.loadMoment[k] = it->second->loadMoment;
+        }
+    }
+}
+
+} // namespace
+
+std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& ranks, int root)
+{
+    const Collective& comm = ranks.comm();
+    const std::size_t owned = ranks.owned();
+    const dem::ParticleStore& p = local.particles;
+    std::vector<std::byte> mine;
+    mine.reserve(owned * kGatherRowBytes);
+    ByteWriter w{mine};
+    for (std::size_t i = 0; i < owned; ++i)
+        putRow(w, p, i);
+    KeyedHistory history;
+    exportHistory(
+        local, [&](std::uint32_t i) { return i < owned; }, history);
+    std::vector<std::byte> historyBytes;
+    packHistory(history, historyBytes);
+
+    const int size = comm.size();
+    Buffers rows(static_cast<std::size_t>(size)), histories(static_cast<std::size_t>(size));
+    rows[root] = std::move(mine);
+    histories[root] = std::move(historyBytes);
+    rows = comm.exchange(std::move(rows));
+    histories = comm.exchange(std::move(histories));
+    if (comm.rank() != root)
+        return std::nullopt;
+
+    dem::World whole;
+    whole.walls = local.walls;
+    whole.materials = local.materials;
+    whole.pairs = local.pairs;
+    whole.domain = local.domain;
+    whole.gravity = local.gravity;
+    whole.time = local.time;
+    whole.stepCount = local.stepCount;
+    whole.health = local.health;
+    whole.neighbors.skin = local.neighbors.skin;
+    whole.neighbors.reach = local.neighbors.reach;
+    whole.pairHistory.keepRolling = local.pairHistory.keepRolling;
+    whole.wallHistory.keepRolling = local.wallHistory.keepRolling;
+    dem::ParticleStore gathered;
+    std::vector<KeyedHistory> sources;
+    for (int a = 0; a < size; ++a)
+    {
+        if (rows[a].size() % kGatherRowBytes != 0)
+            throw SimulationError("MPI gather: " + std::to_string(rows[a].size()) +
+                                  " bytes of rows from rank " + std::to_string(a) +
+                                  ", not a whole number of rows");
+        ByteReader r{rows[a]};
+        while (!r.done())
+            getRow(r, gathered);
+        sources.push_back(unpackHistory(histories[a], a));
+    }
+    // By id, as one process holds them (the scene's order; inserted particles after).
+    std::vector<std::uint32_t> order(gathered.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return gathered.id[a] < gathered.id[b]; });
+    whole.particles.reserve(gathered.size());
+    for (const std::uint32_t i : order)
+    {
+        dem::ParticleStore& q = whole.particles;
+        const std::size_t k = q.add(gathered.position[i], gathered.velocity[i], gathered.angularVelocity[i],
+                                    gathered.radius[i], 1.0, gathered.material[i]);
+        q.force[k] = gathered.force[i];
+        q.torque[k] = gathered.torque[i];
+        q.mass[k] = gathered.mass[i];
+        q.invMass[k] = gathered.invMass[i];
+        q.invInertia[k] = gathered.invInertia[i];
+        q.id[k] = gathered.id[i];
+        q.fixed[k] = gathered.fixed[i];
+    }
+    adoptHistory(whole, sources);
+    dem::refreshFixedParticles(whole);
+    whole.prepared = true;
+    dem::rebuildContactLists(whole);
+    if (local.wallContacts.recordLoads)
+        setWallLoads(whole, sources);
+    return whole;
+}
+
+} // namespace veridem::dist

@@ -1,0 +1,24 @@
+// The whole world of a distributed run on one rank, for output and checkpoints (issue: output and
+// checkpoints on any rank count): every rank's owned particles, ordered by id, with their contact
+// history keyed by id (dist/rank_history.h), the contact lists rebuilt, and each wall slot's load
+// as the owner of its particle recorded it in the step. So the recorders and the checkpoint writer
+// of one process (src/io/) run unchanged on it, and a checkpoint written on N ranks is one a run on
+// any number of ranks restores (RankStep::distribute after readDemCheckpoint).
+#pragma once
+
+#include "dem/world.h"
+#include "dist/rank_step.h"
+
+#include <optional>
+
+namespace veridem::dist
+{
+
+/// On rank `root`: a world holding `local`'s state that every rank shares (walls, materials,
+/// pair table, time, step count, skin and reach, gravity), every rank's owned particles by id
+/// (rows whole, force and torque included), their contacts' history, and the wall loads (with
+/// recordLoads); lists rebuilt, not distributed (world.ranks null). Elsewhere: nullopt.
+/// Collective. O(N) on the root.
+std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& ranks, int root = 0);
+
+} // namespace veridem::dist

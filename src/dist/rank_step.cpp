@@ -1,0 +1,174 @@
+#include "dist/rank_step.h"
+
+#include "core/error.h"
+#include "dist/rank_history.h"
+
+#include <algorithm>
+#include <limits>
+#include <span>
+#include <string>
+
+namespace veridem::dist
+{
+
+namespace
+{
+
+/// Each particle's cost for the cut: 1 plus its touching candidates (the pair stage's work).
+std::vector<std::uint32_t> contactWeights(const dem::World& world, std::size_t count)
+{
+    std::vector<std::uint32_t> weight(count, 1);
+    const dem::NeighborList& list = world.neighbors;
+    for (std::size_t a = 0; a < list.activeFirst.size(); ++a)
+        for (const std::uint32_t i : {list.activeFirst[a], list.activeSecond[a]})
+            if (i < count)
+                ++weight[i];
+    return weight;
+}
+
+} // namespace
+
+RankStep::RankStep(const Collective& comm, std::uint64_t rebalanceEvery)
+    : comm_(comm), rebalanceEvery_(rebalanceEvery)
+{
+    if (rebalanceEvery < 1)
+        throw InputError("MPI: the regions must be cut again every 1 or more exchanges");
+}
+
+void RankStep::distribute(dem::World& world)
+{
+    if (!world.prepared)
+        throw InputError("MPI: the world must be prepared (or restored) before it is distributed");
+    dem::ParticleStore& p = world.particles;
+    const std::size_t n = p.size();
+    Real largest = 0;
+    for (const Real r : p.radius)
+        largest = std::max(largest, r);
+    haloWidth_ =
+        std::max(largest + world.neighbors.skin + world.neighbors.reach, std::numeric_limits<Real>::min());
+
+    // Every rank holds every particle: each takes one slice of them to the cut (the same regions
+    // however they are sliced: bisect's sums are exact).
+    const auto ranks = static_cast<std::size_t>(comm_.size()), me = static_cast<std::size_t>(comm_.rank());
+    const std::size_t lo = n * me / ranks, hi = n * (me + 1) / ranks;
+    const std::vector<std::uint32_t> weight = contactWeights(world, n);
+    decomposition_ = bisect(std::span(p.position).subspan(lo, hi - lo),
+                            std::span(weight).subspan(lo, hi - lo), comm_.size(), comm_);
+    ++cuts_;
+
+    KeyedHistory all;
+    exportHistory(
+        world, [](std::uint32_t) { return true; }, all);
+    halo_ = splitWholeStore(p, decomposition_, haloWidth_, comm_.rank());
+    adoptHistory(world, std::span(&all, 1));
+    dem::refreshFixedParticles(world);
+    world.ranks = this;
+    dem::rebuildContactLists(world);
+}
+
+void RankStep::cut(const dem::World& world)
+{
+    const std::vector<std::uint32_t> weight = contactWeights(world, halo_.owned);
+    decomposition_ =
+        bisect(std::span(world.particles.position).first(halo_.owned), weight, comm_.size(), comm_);
+    ++cuts_;
+}
+
+bool RankStep::afterDrift(dem::World& world, bool rebuild)
+{
+    refreshGhosts(world.particles, halo_, comm_);
+    for (const auto& sent : halo_.sent)
+        refreshBytes_ += sent.size() * kMotionBytes;
+    double decision = rebuild ? 1 : 0;
+    comm_.max(std::span(&decision, 1));
+    if (decision == 0)
+        return false;
+    exchange(world);
+    return true;
+}
+
+void RankStep::exchange(dem::World& world)
+{
+    dem::ParticleStore& p = world.particles;
+    const std::size_t owned = halo_.owned;
+    if (++exchanges_ % rebalanceEvery_ == 0)
+        cut(world);
+    const int ranks = comm_.size(), me = comm_.rank();
+    std::vector<int> dest(owned);
+    for (std::size_t i = 0; i < owned; ++i)
+        dest[i] = decomposition_.owner(p.position[i]);
+
+    // The history this rank keeps (a contact of a particle it still owns) and the history that
+    // leaves with each migrant (every contact of it), in one pass over the lists.
+    std::vector<KeyedHistory> history(static_cast<std::size_t>(ranks)); // [me]: kept here
+    const auto destination = [&](std::uint32_t i) { return i < owned ? dest[i] : -1; };
+    const dem::NeighborList& list = world.neighbors;
+    const dem::ContactHistoryStore& pairs = world.pairHistory;
+    const bool formed = pairs.keepFormed && pairs.formed.size() == pairs.size();
+    for (std::size_t a = 0; a < list.activeFirst.size() && a < pairs.size(); ++a)
+    {
+        if (!(formed ? pairs.formed[a] != 0 : lengthSquared(pairs.spring[a]) > 0))
+            continue;
+        const int di = destination(list.activeFirst[a]), dj = destination(list.activeSecond[a]);
+        if (di == me || dj == me)
+            exportPair(world, a, history[me]);
+        if (di >= 0 && di != me)
+            exportPair(world, a, history[di]);
+        if (dj >= 0 && dj != me && dj != di)
+            exportPair(world, a, history[dj]);
+    }
+    const dem::WallContactList& walls = world.wallContacts;
+    for (std::size_t k = 0; k < walls.particle.size() && k < world.wallHistory.size(); ++k)
+        if (const int d = destination(walls.particle[k]); d >= 0)
+            exportWallSlot(world, k, history[d]);
+
+    halo_ = exchangeParticles(p, owned, decomposition_, haloWidth_, comm_);
+    exchangeBytes_ += halo_.bytesSent;
+    Buffers out(static_cast<std::size_t>(ranks));
+    for (int b = 0; b < ranks; ++b)
+        if (b != me && (!history[b].pairs.empty() || !history[b].walls.empty()))
+        {
+            packHistory(history[b], out[b]);
+            exchangeBytes_ += out[b].size();
+        }
+    const Buffers in = comm_.exchange(std::move(out));
+    std::vector<KeyedHistory> sources; // this rank's own first, then the arrivals by rank
+    sources.push_back(std::move(history[me]));
+    for (int a = 0; a < ranks; ++a)
+        if (a != me)
+            sources.push_back(unpackHistory(in[a], a));
+    adoptHistory(world, sources);
+    dem::refreshFixedParticles(world);
+}
+
+void RankStep::combineHealth(dem::World& world)
+{
+    dem::StepHealth& h = world.health;
+    localRatio_ = h.maxOverlapRatio;
+    localWorst_ = h.worstParticle;
+    localFinite_ = h.finite;
+    localFirstNonFinite_ = h.firstNonFinite;
+    double v[2] = {h.maxOverlapRatio, h.finite ? 0.0 : 1.0};
+    comm_.max(v);
+    h.maxOverlapRatio = v[0];
+    h.finite = v[1] == 0;
+}
+
+std::uint32_t RankStep::failedParticleId(const dem::World& world) const
+{
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    const dem::ParticleStore& p = world.particles;
+    std::uint32_t mine = kNone;
+    if (!world.health.finite)
+    {
+        if (!localFinite_ && localFirstNonFinite_ < p.size())
+            mine = p.id[localFirstNonFinite_];
+    }
+    else if (localRatio_ == world.health.maxOverlapRatio && localWorst_ < p.size())
+        mine = p.id[localWorst_];
+    double v = static_cast<double>(kNone - mine); // (the lowest id: the largest of these)
+    comm_.max(std::span(&v, 1));
+    return kNone - static_cast<std::uint32_t>(v);
+}
+
+} // namespace veridem::dist
