@@ -30,12 +30,15 @@
 // before and after it (core_probe.h) shows whether the run had a whole CPU core. --no-fusion: the
 // general step stages only (Execution::fusedSteps off), to measure what the fused paths pay. --spin-ns: how
 // long a waiting thread of the pool spins before it blocks (exec::setSpinNanoseconds; 0: at once).
+#include "app/mpi_launch.h"
 #include "core_probe.h"
 #include "dem/forces.h"
 #include "dem/models/normal.h"
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
+#include "dist/rank_gather.h"
+#include "dist/rank_step.h"
 #include "exec/isa.h"
 #include "exec/thread_pool.h"
 #include "io/surface_mesh_reader.h"
@@ -397,8 +400,65 @@ World turntableWorld()
 
 namespace
 {
+
+/// Under `mpirun -np R` (R > 1): the run's figures from all ranks, printed by the first. Wall time
+/// is the slowest rank's; memory is every rank's peak RSS summed (ghosts and MPI buffers
+/// included) over the particles; communication is each rank's time in the exchanges.
+void reportRanks(const Options& o, const World& world, const dist::RankStep& ranks, std::size_t n,
+                 double seconds, double cpu, double residentBefore)
+{
+    const dist::Collective& comm = ranks.comm();
+    const dist::RankStep::Times& t = ranks.times();
+    std::vector<double> largest = {seconds, t.refresh, t.decision, t.health, t.exchange};
+    comm.max(largest);
+    std::vector<std::uint64_t> sums = {static_cast<std::uint64_t>(peakResidentBytes()),
+                                       static_cast<std::uint64_t>(residentBefore),
+                                       static_cast<std::uint64_t>(cpu * 1e6),
+                                       ranks.halo().ghosts(),
+                                       ranks.refreshBytes(),
+                                       ranks.exchangeBytes()};
+    comm.sum(sums);
+    std::vector<double> ownedMaxD = {double(ranks.owned()), double(ranks.halo().ghosts())};
+    comm.max(ownedMaxD);
+    const std::optional<World> whole = dist::gatherWorld(world, ranks);
+    if (comm.rank() != 0)
+        return;
+    const int r = comm.size();
+    const double steps = static_cast<double>(o.steps);
+    const double wall = largest[0];
+    std::printf("scene %s  model %s  particles %zu  MPI ranks %d  threads %d  steps %ld  dt %g s\n",
+                o.scene.c_str(), o.model.c_str(), n, r, o.threads, o.steps, 1e-5);
+    std::printf("  wall time %.3f s  %.4g particle-steps/s  %.4g steps/s\n", wall,
+                static_cast<double>(n) * steps / wall, steps / wall);
+    std::printf("  cpu time %.3f s = %.2f cores busy\n", double(sums[2]) / 1e6, double(sums[2]) / 1e6 / wall);
+    std::printf("  peak RSS summed over the ranks %.1f MB = %.0f B/particle (%.0f B/particle above the empty "
+                "processes)\n",
+                double(sums[0]) / 1e6, double(sums[0]) / double(n), double(sums[0] - sums[1]) / double(n));
+    std::printf(
+        "  owned per rank: mean %.0f, largest %.0f (%.3f of the mean); ghosts %.0f a rank (%.3f per owned "
+        "particle), largest %.0f\n",
+        double(n) / r, ownedMaxD[0], ownedMaxD[0] * r / double(n), double(sums[3]) / r,
+        double(sums[3]) / double(n), ownedMaxD[1]);
+    std::printf("  regions cut %llu times in %llu exchanges of particles\n",
+                static_cast<unsigned long long>(ranks.cuts()),
+                static_cast<unsigned long long>(ranks.exchanges()));
+    std::printf(
+        "  bytes sent per rank per step: ghost motion %.0f, exchanges of particles and history %.0f (mean "
+        "over the ranks, warm-up included)\n",
+        double(sums[4]) / r / double(o.steps + o.warmup), double(sums[5]) / r / double(o.steps + o.warmup));
+    std::printf(
+        "  time in communication (largest rank, warm-up included): ghost refresh %.3f s, rebuild decision "
+        "%.3f s, health %.3f s, exchanges %.3f s; of the wall time %.1f %%\n",
+        largest[1], largest[2], largest[3], largest[4],
+        100 * (largest[1] + largest[2] + largest[3] + largest[4]) / wall);
+    if (whole)
+        std::printf("  kinetic energy after %ld steps %.9e J\n", o.warmup + o.steps, kineticEnergy(*whole));
+    std::fflush(stdout);
+}
+
 int run(int argc, char** argv)
 {
+    app::MpiLaunch launch(argc, argv);
     const Options o = parse(argc, argv);
     if (o.probeOnly)
     {
@@ -420,7 +480,14 @@ int run(int argc, char** argv)
         const auto setupStart = std::chrono::steady_clock::now();
         if (o.sort)
             sortParticlesSpatially(world);
-        prepare(world);
+        std::optional<dist::RankStep> ranks;
+        if (launch.size() > 1) // each rank prepares its part
+        {
+            ranks.emplace(*launch.collective());
+            ranks->distribute(world);
+        }
+        else
+            prepare(world);
         const double setupSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
         world.exec.profile.enabled = o.profile;
@@ -438,7 +505,7 @@ int run(int argc, char** argv)
         std::vector<double> windows; // seconds per window
         windows.reserve(static_cast<std::size_t>(o.steps / kWindow));
         auto windowStart = start;
-        const bool progressTty = isatty(STDERR_FILENO) != 0; // (not into logs)
+        const bool progressTty = isatty(STDERR_FILENO) != 0 && launch.rank() == 0; // (not into logs)
         auto nextProgress = start + std::chrono::seconds(5);
         bool progressShown = false;
         for (long done = 0; done < o.steps;) // windows of kWindow steps, then the remainder
@@ -472,6 +539,11 @@ int run(int argc, char** argv)
         const double cpu = cpuSeconds() - cpuStart;
         const bench::CoreProbe probeAfter = bench::probeCore();
         const double rate = static_cast<double>(n) * static_cast<double>(o.steps) / seconds;
+        if (ranks)
+        {
+            reportRanks(o, world, *ranks, n, seconds, cpu, residentBefore);
+            continue;
+        }
 
         const double peak = peakResidentBytes();
         std::printf("scene %s  model %s  particles %zu  threads %d  steps %ld  dt %g s\n", o.scene.c_str(),

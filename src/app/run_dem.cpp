@@ -202,7 +202,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                          options.restartFile.c_str(), static_cast<unsigned long long>(world.stepCount),
                          world.time);
     }
-    else
+    else if (!severalRanks) // (on several ranks, each prepares its part: RankStep::distribute)
     {
         dem::prepare(world);
         if (!flow.empty())

@@ -409,21 +409,24 @@ Real pairTouchReach(const World& world)
 
 } // namespace
 
+Real defaultSkin(const World& world)
+{
+    Real maxRadius = 0;
+    for (Real r : world.particles.radius)
+        maxRadius = std::max(maxRadius, r);
+    // Few particles: a wide skin costs nothing (a handful of candidate pairs and walls) and
+    // spares a fast ball a list rebuild every few steps (a 12 m/s ball in the dish moves
+    // 0.2 r per step at dt = 5e-5 s).
+    const Real perRadius = world.particles.size() < kSmallWorld ? 4.0 : 0.2;
+    return perRadius * maxRadius;
+}
+
 void prepare(World& world)
 {
     if (world.pairs.count() != world.materials.size())
         world.pairs.build(world.materials);
     if (world.neighbors.skin <= 0)
-    {
-        Real maxRadius = 0;
-        for (Real r : world.particles.radius)
-            maxRadius = std::max(maxRadius, r);
-        // Few particles: a wide skin costs nothing (a handful of candidate pairs and walls) and
-        // spares a fast ball a list rebuild every few steps (a 12 m/s ball in the dish moves
-        // 0.2 r per step at dt = 5e-5 s).
-        const Real perRadius = world.particles.size() < kSmallWorld ? 4.0 : 0.2;
-        world.neighbors.skin = perRadius * maxRadius;
-    }
+        world.neighbors.skin = defaultSkin(world);
     // Rolling springs are stored only if some pair uses the EPSD rolling model.
     bool rollingHistory = false;
     for (std::uint32_t a = 0; a < world.pairs.count(); ++a)

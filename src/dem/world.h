@@ -202,6 +202,10 @@ struct World
     std::uint32_t materialId(const std::string& name) const; // throws InputError if unknown
 };
 
+/// The neighbour skin [m] prepare() gives a world that sets none (NeighborList::skin <= 0): 4 r_max
+/// below 64 particles, else 0.2 r_max.
+Real defaultSkin(const World& world);
+
 /// Mixes the pair table, builds the neighbour list and computes the initial forces. Called by the
 /// first step() if not called before; call again after adding particles, walls or materials.
 void prepare(World& world);

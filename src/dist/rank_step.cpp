@@ -1,9 +1,11 @@
 #include "dist/rank_step.h"
 
 #include "core/error.h"
+#include "dem/forces.h"
 #include "dist/rank_history.h"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <span>
 #include <string>
@@ -13,6 +15,14 @@ namespace veridem::dist
 
 namespace
 {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point from, Clock::time_point to)
+{
+    return std::chrono::duration<double>(to - from).count();
+}
+
+constexpr Real kLeast = std::numeric_limits<Real>::min(); // (a halo of no particles: > 0)
 
 /// Each particle's cost for the cut: 1 plus its touching candidates (the pair stage's work).
 std::vector<std::uint32_t> contactWeights(const dem::World& world, std::size_t count)
@@ -37,15 +47,14 @@ RankStep::RankStep(const Collective& comm, std::uint64_t rebalanceEvery)
 
 void RankStep::distribute(dem::World& world)
 {
-    if (!world.prepared)
-        throw InputError("MPI: the world must be prepared (or restored) before it is distributed");
     dem::ParticleStore& p = world.particles;
     const std::size_t n = p.size();
+    // What prepare() sets from all the particles, set here for all ranks alike.
+    if (world.neighbors.skin <= 0)
+        world.neighbors.skin = dem::defaultSkin(world);
     Real largest = 0;
     for (const Real r : p.radius)
         largest = std::max(largest, r);
-    haloWidth_ =
-        std::max(largest + world.neighbors.skin + world.neighbors.reach, std::numeric_limits<Real>::min());
 
     // Every rank holds every particle: each takes one slice of them to the cut (the same regions
     // however they are sliced: bisect's sums are exact).
@@ -56,6 +65,30 @@ void RankStep::distribute(dem::World& world)
                             std::span(weight).subspan(lo, hi - lo), comm_.size(), comm_);
     ++cuts_;
 
+    if (!world.prepared) // a fresh start: prepare this rank's part only (no contacts yet to carry)
+    {
+        haloWidth_ = 0;
+        halo_ = splitWholeStore(p, decomposition_, std::max(largest + world.neighbors.skin, kLeast),
+                                comm_.rank());
+        dem::prepare(world);
+        // The touch reach (JKR adhesion) from the materials and radii of all ranks' particles: the
+        // largest. A halo that must hold it too: the ghosts made again, the lists and the initial
+        // forces with them.
+        double reach = world.neighbors.reach;
+        comm_.max(std::span(&reach, 1));
+        haloWidth_ = std::max(largest + world.neighbors.skin + reach, kLeast);
+        world.ranks = this;
+        if (reach > 0)
+        {
+            world.neighbors.reach = reach;
+            exchange(world);
+            dem::rebuildContactLists(world);
+            dem::computeForces(world, 0.0);
+        }
+        return;
+    }
+    // A restored (or prepared) world: its contact history, keyed by id, goes with the particles.
+    haloWidth_ = std::max(largest + world.neighbors.skin + world.neighbors.reach, kLeast);
     KeyedHistory all;
     exportHistory(
         world, [](std::uint32_t) { return true; }, all);
@@ -76,14 +109,20 @@ void RankStep::cut(const dem::World& world)
 
 bool RankStep::afterDrift(dem::World& world, bool rebuild)
 {
+    const auto start = Clock::now();
     refreshGhosts(world.particles, halo_, comm_);
     for (const auto& sent : halo_.sent)
         refreshBytes_ += sent.size() * kMotionBytes;
+    const auto refreshed = Clock::now();
+    times_.refresh += seconds(start, refreshed);
     double decision = rebuild ? 1 : 0;
     comm_.max(std::span(&decision, 1));
+    const auto decided = Clock::now();
+    times_.decision += seconds(refreshed, decided);
     if (decision == 0)
         return false;
     exchange(world);
+    times_.exchange += seconds(decided, Clock::now());
     return true;
 }
 
@@ -149,7 +188,9 @@ void RankStep::combineHealth(dem::World& world)
     localFinite_ = h.finite;
     localFirstNonFinite_ = h.firstNonFinite;
     double v[2] = {h.maxOverlapRatio, h.finite ? 0.0 : 1.0};
+    const auto start = Clock::now();
     comm_.max(v);
+    times_.health += seconds(start, Clock::now());
     h.maxOverlapRatio = v[0];
     h.finite = v[1] == 0;
 }

@@ -36,9 +36,11 @@ class RankStep final : public dem::RankExchange
     RankStep(const Collective& comm, std::uint64_t rebalanceEvery = 10);
 
     /// Keeps this rank's part of a world that every rank holds whole and identical (read from the
-    /// same scene and prepared, or restored from one checkpoint): the regions cut, the store
-    /// reduced to the owned particles and their ghosts (rows whole), the history keyed by id
-    /// taken in, the contact lists rebuilt; sets world.ranks. Collective.
+    /// same scene, or restored from one checkpoint): the regions cut, the store reduced to the
+    /// owned particles and their ghosts (rows whole). A world not prepared is then prepared (only
+    /// this part: its lists and initial forces; the skin and touch reach set from all the
+    /// particles); a prepared or restored one takes in its contact history keyed by id and
+    /// rebuilds its lists. Sets world.ranks. Collective.
     void distribute(dem::World& world);
 
     bool afterDrift(dem::World& world, bool rebuild) override;
@@ -59,6 +61,14 @@ class RankStep final : public dem::RankExchange
     /// Bytes this rank sent in exchanges of particles and history, and in ghost refreshes [B].
     std::uint64_t exchangeBytes() const { return exchangeBytes_; }
     std::uint64_t refreshBytes() const { return refreshBytes_; }
+    /// Wall time this rank spent in its exchanges so far [s]: the ghost refreshes, the rebuild
+    /// decision and the health (each a collective: the waits for slower ranks included), and the
+    /// exchanges of particles with their history (and the cuts).
+    struct Times
+    {
+        double refresh = 0, decision = 0, health = 0, exchange = 0;
+    };
+    const Times& times() const { return times_; }
 
   private:
     void cut(const dem::World& world);
@@ -70,6 +80,7 @@ class RankStep final : public dem::RankExchange
     Halo halo_;
     Real haloWidth_ = 0; // r_max + skin + touch reach [m]
     std::uint64_t exchanges_ = 0, cuts_ = 0, exchangeBytes_ = 0, refreshBytes_ = 0;
+    Times times_;
     // This rank's own health of the last step (combineHealth), for failedParticleId.
     Real localRatio_ = 0;
     std::uint32_t localWorst_ = 0, localFirstNonFinite_ = 0;
