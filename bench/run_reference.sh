@@ -1,7 +1,7 @@
 #!/bin/sh
 # The measurements of docs/performance.md, in one run so that ratios are fair on a shared
-# machine: for each scene (settled bed, gas) and each thread/rank count (1, 2), veridem, then
-# LAMMPS, then LIGGGHTS (if installed: apt-get install -y lammps liggghts), on the same input; then
+# machine: for each scene (settled bed, gas) and each thread/rank count (1, 2), veridem (on 2, also
+# on 2 MPI ranks: "veridem-mpi"), then LAMMPS, then LIGGGHTS (if installed: apt-get install -y lammps liggghts), on the same input; then
 # the bed with Hertz-Mindlin contacts against LAMMPS `pair_style granular`, the 1e6-sphere bed and
 # the one-ball turntable; then, if LIGGGHTS is installed, 20,000 spheres in a rotating meshed drum.
 #
@@ -37,6 +37,12 @@ trap 'rm -rf "$work"' EXIT
 
 python3 "$here/lammps/xyz_to_data.py" "$shared/settled_bed_20k.xyz" "$work/bed.data" 0.05
 python3 "$here/lammps/xyz_to_data.py" "$shared/random_gas_20k.xyz" "$work/gas.data" 0.32
+
+# veridem on MPI ranks (dist/rank_step.h): the same bench, distributed, one thread a rank.
+mpi_bench() { # ranks, bench arguments...
+  n=$1; shift
+  mpirun --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none -np "$n" "$bench" "$@" --threads 1
+}
 
 rate_of_loop() {  # LAMMPS/LIGGGHTS log -> particle-steps/s
   # "Loop time of T on P procs for N steps with M atoms"
@@ -114,6 +120,11 @@ if [ -n "${VERIDEM_ROUNDS:-}" ]; then
       echo "round $r, bed, $n thread(s)/rank(s): veridem $v  LAMMPS $l  ratio $(ratio "$v" "$l");" \
         "best 100-step windows: veridem $vb  LAMMPS $lb  ratio $(ratio "$vb" "$lb");" \
         "core probe before/after, adds/cycle: veridem $vp  LAMMPS $lp"
+      if [ "$n" = 2 ]; then # veridem on 2 MPI ranks, against LAMMPS on 2 ranks and veridem on 2 threads
+        m=$(mpi_bench 2 --steps "$steps" --file "$shared/settled_bed_20k.xyz" |
+          awk '/wall time/ {for (i = 1; i < NF; ++i) if ($(i + 1) == "particle-steps/s") print $i}')
+        echo "round $r, bed, 2 MPI ranks: veridem $m  ratio to LAMMPS $(ratio "$m" "$l")  ratio to veridem on 2 threads $(ratio "$m" "$v")"
+      fi
     done
     if [ -n "${VERIDEM_BASELINE_BENCH:-}" ]; then
       b=$(veridem_rate "$VERIDEM_BASELINE_BENCH" 1)
@@ -128,6 +139,10 @@ for scene in bed gas; do
     echo "== $scene, $n thread(s)/rank(s), $steps steps"
     "$bench" --scene "$scene" --steps "$steps" --threads "$n" --file "$shared/$( [ $scene = bed ] && echo settled_bed_20k || echo random_gas_20k ).xyz" \
       | sed 's/^/   veridem /'
+    if [ "$n" = 2 ]; then
+      mpi_bench 2 --scene "$scene" --steps "$steps" --file "$shared/$( [ $scene = bed ] && echo settled_bed_20k || echo random_gas_20k ).xyz" \
+        | sed 's/^/   veridem-mpi /'
+    fi
     if command -v lmp > /dev/null; then
       echo "   LAMMPS   before: $("$bench" --core-probe)"
       mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/$scene.data" \
@@ -163,8 +178,17 @@ for n in 1 2; do
     echo "   LAMMPS   after: $("$bench" --core-probe)"
   fi
 done
-echo "== 1e6-sphere bed (the 20k bed tiled 7 x 7 = 980,000 spheres), 200 steps, 1 and 2 threads"
+echo "== 1e6-sphere bed (the 20k bed tiled 7 x 7 = 980,000 spheres), 200 steps, 1 and 2 threads, 2 MPI ranks"
 for n in 1 2; do "$bench" --tile 7 --steps 200 --threads "$n" | sed 's/^/   veridem /'; done
+mpi_bench 2 --tile 7 --steps 200 | sed 's/^/   veridem-mpi /'
+if command -v lmp > /dev/null; then
+  python3 "$here/lammps/xyz_to_data.py" "$shared/settled_bed_20k.xyz" "$work/bed_1e6.data" 0.05 --tile 7 &&
+    for n in 1 2; do
+      mpirun --allow-run-as-root --oversubscribe -np "$n" lmp -in "$here/lammps/bed.in" -var data "$work/bed_1e6.data" \
+        -var side 0.7 -var steps 200 -log "$work/lammps.log" -screen none -nocite > /dev/null 2>&1
+      echo "   LAMMPS   $n rank(s): $(rate_of_loop "$work/lammps.log") particle-steps/s  ($(grep '^Loop time' "$work/lammps.log"))"
+    done
+fi
 echo "== one ball on a turntable, 3,000,000 steps"
 "$bench" --scene turntable --steps 3000000 | sed 's/^/   veridem /'
 drum_section

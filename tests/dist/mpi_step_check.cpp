@@ -16,6 +16,10 @@
 //     impacts amplify. Measured: 2.1e-14 m and 7e-14 on 2 ranks, 1.6e-14 m and 1.6e-13 on 4; the bounds leave
 //     a factor 50 on the positions (and ~10^4 on the energy, whose sum over 2,156 terms is less sensitive to
 //     one particle's order than to the number of particles in contact at the last step).
+//   - load balance: a column of spheres falls onto a floor; its regions, cut along z at the start,
+//     follow the particles down when cut again every 10th exchange (the busiest rank within 10 %
+//     of the mean cost), and the same column with the first cut kept is unbalanced (> 1.5: the
+//     case tests the cuts).
 // Exit 0 when every rank passes.
 #include "dem/world.h"
 #include "dist/mpi_collective.h"
@@ -287,6 +291,82 @@ void pour(const Collective& comm)
             repeatable ? "yes" : "NO", threadFree ? "same" : "DIFFER");
 }
 
+// --- load balance
+
+/// A column of 1,440 spheres (6 x 6 x 40, 2.5 mm apart, 13 mm wide and 10 cm tall, its foot 2 cm
+/// up) falling 0.15 s onto a floor (the whole column has landed): cut along z at the start, below
+/// and above z = 7 cm, its regions must follow the particles down.
+dem::World columnWorld()
+{
+    dem::World world;
+    dem::Material glass;
+    glass.name = "glass";
+    glass.density = 2500;
+    glass.normalStiffness = 500;
+    glass.restitution = 0.5;
+    glass.friction = 0.4;
+    world.addMaterial(glass);
+    world.gravity = {0, 0, -kG};
+    world.walls.push_back(plane("floor", {0, 0, 0}, {0, 0, 1}));
+    for (int k = 0; k < 40; ++k)
+        for (int j = 0; j < 6; ++j)
+            for (int i = 0; i < 6; ++i)
+                world.particles.add({2.5e-3 * i, 2.5e-3 * j, 0.02 + 2.5e-3 * k}, {}, {}, 1e-3, 2500, 0);
+    return world;
+}
+
+/// The largest rank's share of the particles' cost (1 + touching candidates, as the cut weighs
+/// them) over the mean share [-].
+double costImbalance(const dem::World& world, const RankStep& ranks)
+{
+    std::vector<std::uint64_t> cost(static_cast<std::size_t>(ranks.comm().size()), 0);
+    std::uint64_t mine = ranks.owned();
+    const dem::NeighborList& list = world.neighbors;
+    for (std::size_t a = 0; a < list.activeFirst.size(); ++a)
+        mine += (list.activeFirst[a] < ranks.owned()) + (list.activeSecond[a] < ranks.owned());
+    cost[static_cast<std::size_t>(ranks.comm().rank())] = mine;
+    ranks.comm().sum(cost);
+    std::uint64_t total = 0, largest = 0;
+    for (const std::uint64_t c : cost)
+    {
+        total += c;
+        largest = std::max(largest, c);
+    }
+    return double(largest) * double(cost.size()) / double(total);
+}
+
+void loadBalance(const Collective& comm)
+{
+    if (comm.size() == 1)
+        return;
+    double imbalance[2] = {0, 0}; // cut every 10th exchange; never cut again
+    std::uint64_t cuts = 0;
+    for (int k = 0; k < 2; ++k)
+    {
+        dem::World world = columnWorld();
+        RankStep ranks(comm, k == 0 ? 10 : 1000000);
+        ranks.distribute(world);
+        dem::advance(world, 2e-5, 7500);
+        imbalance[k] = costImbalance(world, ranks);
+        if (k == 0)
+            cuts = ranks.cuts();
+    }
+    // Bisection keeps each part within the largest particle weight per level of its share
+    // (dist/bisection.h): a particle's weight is at most ~14 here, 2 levels, against a share of
+    // ~2,000 or more: 1.5 %; the cost moves on between cuts (10 exchanges): 10 % in all.
+    if (!(imbalance[0] <= 1.10))
+        fail("load balance: the busiest rank has " + std::to_string(imbalance[0]) +
+             " of the mean cost with the regions cut every 10th exchange (bound 1.10)");
+    if (!(imbalance[1] > 1.5))
+        fail("load balance: the regions never cut again are balanced too (" + std::to_string(imbalance[1]) +
+             " of the mean): the column does not test the cuts");
+    if (comm.rank() == 0)
+        std::printf(
+            "load balance: a falling column, busiest rank's cost / mean %.3f with %llu cuts, %.3f with "
+            "the first cut kept\n",
+            imbalance[0], static_cast<unsigned long long>(cuts), imbalance[1]);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -299,6 +379,7 @@ int main(int argc, char** argv)
         {
             bowlingBall(comm);
             pour(comm);
+            loadBalance(comm);
         }
         catch (const std::exception& e)
         {
