@@ -4,6 +4,7 @@
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "dem/time_step.h"
+#include "dist/rank_flow.h"
 #include "dist/rank_gather.h"
 #include "dist/rank_step.h"
 #include "exec/thread_pool.h"
@@ -22,9 +23,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fcntl.h> // open
 #include <optional>
 #include <sstream>
 #include <string>
+#include <unistd.h> // dup, dup2
 
 namespace veridem::app
 {
@@ -126,6 +129,38 @@ void printRollingFrictionConversion(const dem::World& world)
     }
 }
 
+/// Silences this process's stderr while it lives, if `quiet` (an error still reaches the user: it
+/// is printed after the scope, by main).
+class QuietStderr
+{
+  public:
+    explicit QuietStderr(bool quiet)
+    {
+        if (!quiet)
+            return;
+        std::fflush(stderr);
+        saved_ = dup(STDERR_FILENO);
+        const int null = open("/dev/null", O_WRONLY);
+        if (saved_ < 0 || null < 0)
+            return;
+        dup2(null, STDERR_FILENO);
+        close(null);
+    }
+    ~QuietStderr()
+    {
+        if (saved_ < 0)
+            return;
+        std::fflush(stderr);
+        dup2(saved_, STDERR_FILENO);
+        close(saved_);
+    }
+    QuietStderr(const QuietStderr&) = delete;
+    QuietStderr& operator=(const QuietStderr&) = delete;
+
+  private:
+    int saved_ = -1;
+};
+
 /// Refuses what does not run on several MPI ranks yet, naming it.
 void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
 {
@@ -135,8 +170,6 @@ void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
                          " does not run on several MPI ranks yet; run this scene " +
                          "in one process (with --threads N for the cores)");
     };
-    if (!scene.flow.empty())
-        refuse("[[insert]] and [[outlet]] (particles that come and go)");
     if (scene.world.domain.any())
         refuse("a periodic boundary");
     if (scene.measurements.energy)
@@ -147,10 +180,14 @@ void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
 
 int runDemScene(const toml::table& table, const RunOptions& options)
 {
-    io::DemScene scene = io::readDemScene(table, options.sceneFile);
-    dem::World& world = scene.world;
     const bool severalRanks = options.ranks && options.ranks->size() > 1;
     const bool root = !severalRanks || options.ranks->rank() == 0; // prints and writes the files
+    io::DemScene scene = [&]
+    {
+        const QuietStderr quiet(!root); // (every rank reads the scene; the first prints its warnings)
+        return io::readDemScene(table, options.sceneFile);
+    }();
+    dem::World& world = scene.world;
     if (severalRanks)
         refuseOnRanks(scene, options);
     checkTimeStep(scene, options, root);
@@ -214,6 +251,14 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     {
         rankStep.emplace(*options.ranks, options.rebalanceEvery);
         rankStep->distribute(world);
+        if (!resume && !flow.empty())
+            dist::applyFlow(flow, world, *rankStep, scene.dt); // (step 0 is a flow step)
+        if (resume && !root) // (the checkpoint's outlet totals are counted once, by the first rank)
+            for (dem::Outlet& o : flow.outlets)
+            {
+                o.count = 0;
+                o.mass = 0;
+            }
     }
     world.wallContacts.setRecordLoads(wallLoads);
     if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
@@ -250,8 +295,13 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     // The world the outputs and checkpoints read: this one, or on several ranks the whole world
     // gathered on the first (nullopt on the others). Collective.
     const auto wholeWorld = [&] { return dist::gatherWorld(world, *rankStep); };
+    // The outlets' totals: this process's, or on several ranks their sum (on the first). Collective.
+    const auto outletState = [&]
+    { return rankStep ? dist::outletTotals(flow.outlets, *options.ranks) : flow.outlets; };
     const auto recordOutputs = [&]
     {
+        const std::vector<dem::Outlet> outletTotals =
+            outletRecorder || rankStep ? outletState() : flow.outlets;
         std::optional<dem::World> gathered;
         if (rankStep && !(gathered = wholeWorld()))
             return;
@@ -272,7 +322,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (walls)
             walls->record(w);
         if (outletRecorder)
-            outletRecorder->record(w.time, flow.outlets);
+            outletRecorder->record(w.time, outletTotals);
     };
     const auto closeOutputs = [&]
     {
@@ -292,6 +342,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     const std::filesystem::path checkpointPath = options.outDir / "checkpoint.bin";
     const auto writeCheckpoint = [&]
     {
+        dem::ParticleFlow saved = flow; // (on several ranks, with the outlets' totals)
+        saved.outlets = outletState();
         std::optional<dem::World> gathered;
         if (rankStep && !(gathered = wholeWorld()))
             return;
@@ -303,7 +355,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (outletRecorder)
             bytes.push_back(outletRecorder->size());
         io::writeDemCheckpoint(checkpointPath, gathered ? *gathered : world, sceneHash,
-                               {recorder->frameTimes(), bytes, 0}, ledgerState, &flow);
+                               {recorder->frameTimes(), bytes, 0}, ledgerState, &saved);
     };
     io::stopOnSignals();
 
@@ -370,7 +422,12 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         else if (runSeconds > 0.05 && chunk > 1)
             chunk /= 2;
         if (!flow.empty() && s % flow.everySteps == 0)
-            flow.apply(world, scene.dt);
+        {
+            if (rankStep)
+                dist::applyFlow(flow, world, *rankStep, scene.dt);
+            else
+                flow.apply(world, scene.dt);
+        }
         if (s % outputEvery == 0 || s == totalSteps)
             recordOutputs();
         bool checkpointed = false;

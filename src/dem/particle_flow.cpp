@@ -247,79 +247,97 @@ std::size_t insert(World& world, Inserter& in, ParticleIndex& index, std::uint32
 
 } // namespace
 
-bool ParticleFlow::apply(World& world, Real dt)
+std::vector<std::uint32_t> ParticleFlow::takeAtOutlets(const World& world, std::size_t count)
 {
-    const Real t = world.time;
-    bool removed = false;
-    if (!outlets.empty())
+    std::vector<std::uint32_t> doomed;
+    if (outlets.empty())
+        return doomed;
+    const ParticleStore& p = world.particles;
+    for (std::size_t i = 0; i < count; ++i)
     {
-        std::vector<std::uint32_t> doomed;
-        const ParticleStore& p = world.particles;
-        for (std::size_t i = 0; i < p.size(); ++i)
-        {
-            if (p.fixed[i] || p.retired(i))
-                continue;
-            for (Outlet& o : outlets)
-                if (o.region.contains(p.position[i]))
-                {
-                    ++o.count;
-                    o.mass += p.mass[i];
-                    doomed.push_back(static_cast<std::uint32_t>(i));
-                    break;
-                }
-        }
-        if (!doomed.empty())
-        {
-            if (retiresWithoutRebuild(world))
-                retireParticles(world, doomed); // (out of the store at the next rebuild)
-            else
+        if (p.fixed[i] || p.retired(i))
+            continue;
+        for (Outlet& o : outlets)
+            if (o.region.contains(p.position[i]))
             {
-                removeParticles(world, std::move(doomed));
-                rebuildAfterParticleChange(world);
+                ++o.count;
+                o.mass += p.mass[i];
+                doomed.push_back(static_cast<std::uint32_t>(i));
+                break;
             }
-            removed = true;
-        }
     }
+    return doomed;
+}
+
+bool ParticleFlow::insertionDue(Real t, Real dt) const
+{
     bool due = false;
     for (const Inserter& in : inserters)
         due = due || behind(in, t, dt);
-    if (!due)
-        return removed;
+    return due;
+}
+
+void ParticleFlow::insertNew(World& world, Real dt)
+{
     // The grid of the particles for the overlap test and the new pairs (particle_index.h), kept
     // from the last event while the contact lists were not rebuilt.
-    ParticleStore& p = world.particles;
-    const std::size_t before = p.size();
+    const ParticleStore& p = world.particles;
     const Real newRadius = largestRadius(), extra = insertedPairSearch(world.neighbors);
-    if (!index.validFor(world.neighbors, before, newRadius, extra))
+    if (!index.validFor(world.neighbors, p.size(), newRadius, extra))
     {
-        Vec3 lo{1, 1, 1}, hi{0, 0, 0}; // (empty)
-        for (const Inserter& in : inserters)
-        {
-            Vec3 a, b;
-            in.region.bounds(a, b);
-            const bool first = lo.x > hi.x;
-            lo = first ? a : Vec3{std::fmin(lo.x, a.x), std::fmin(lo.y, a.y), std::fmin(lo.z, a.z)};
-            hi = first ? b : Vec3{std::fmax(hi.x, b.x), std::fmax(hi.y, b.y), std::fmax(hi.z, b.z)};
-        }
-        // Along a periodic axis the whole box: a new particle near one face meets the particles
-        // near the other through their images.
-        const auto widen = [](Real& a, Real& b, Real boxMin, Real boxMax)
-        {
-            a = std::fmin(a, boxMin);
-            b = std::fmax(b, boxMax);
-        };
-        const PeriodicDomain& box = world.domain;
-        if (box.periodic[0])
-            widen(lo.x, hi.x, box.min.x, box.max.x);
-        if (box.periodic[1])
-            widen(lo.y, hi.y, box.min.y, box.max.y);
-        if (box.periodic[2])
-            widen(lo.z, hi.z, box.min.z, box.max.z);
+        Vec3 lo, hi;
+        insertionBounds(world.domain, lo, hi);
         index.build(p, world.neighbors, newRadius, extra, lo, hi);
     }
     for (Inserter& in : inserters)
-        insert(world, in, index, nextId, t, dt);
-    if (p.size() == before)
+        insert(world, in, index, nextId, world.time, dt);
+}
+
+void ParticleFlow::insertionBounds(const PeriodicDomain& box, Vec3& lo, Vec3& hi) const
+{
+    lo = {1, 1, 1}, hi = {0, 0, 0}; // (empty)
+    for (const Inserter& in : inserters)
+    {
+        Vec3 a, b;
+        in.region.bounds(a, b);
+        const bool first = lo.x > hi.x;
+        lo = first ? a : Vec3{std::fmin(lo.x, a.x), std::fmin(lo.y, a.y), std::fmin(lo.z, a.z)};
+        hi = first ? b : Vec3{std::fmax(hi.x, b.x), std::fmax(hi.y, b.y), std::fmax(hi.z, b.z)};
+    }
+    // Along a periodic axis the whole box: a new particle near one face meets the particles
+    // near the other through their images.
+    const auto widen = [](Real& a, Real& b, Real boxMin, Real boxMax)
+    {
+        a = std::fmin(a, boxMin);
+        b = std::fmax(b, boxMax);
+    };
+    if (box.periodic[0])
+        widen(lo.x, hi.x, box.min.x, box.max.x);
+    if (box.periodic[1])
+        widen(lo.y, hi.y, box.min.y, box.max.y);
+    if (box.periodic[2])
+        widen(lo.z, hi.z, box.min.z, box.max.z);
+}
+
+bool ParticleFlow::apply(World& world, Real dt)
+{
+    bool removed = false;
+    if (std::vector<std::uint32_t> doomed = takeAtOutlets(world, world.particles.size()); !doomed.empty())
+    {
+        if (retiresWithoutRebuild(world))
+            retireParticles(world, doomed); // (out of the store at the next rebuild)
+        else
+        {
+            removeParticles(world, std::move(doomed));
+            rebuildAfterParticleChange(world);
+        }
+        removed = true;
+    }
+    if (!insertionDue(world.time, dt))
+        return removed;
+    const std::size_t before = world.particles.size();
+    insertNew(world, dt);
+    if (world.particles.size() == before)
         return removed;
     if (insertsWithoutRebuild(world, before, index.largestRadius()))
         addInsertedParticles(world, before, index);

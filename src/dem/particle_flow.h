@@ -135,6 +135,19 @@ struct ParticleFlow
     /// the particles changed. Retired particles stay in the store until the next rebuild:
     /// compactRetiredParticles before reading the particles by slot.
     bool apply(World& world, Real dt);
+
+    // The parts of apply(), for a run on several MPI ranks (dist/rank_flow.h):
+    /// The first `count` particles whose centre an outlet holds (frozen and retired ones
+    /// excepted), counted into the outlets' totals; the caller retires or removes them.
+    std::vector<std::uint32_t> takeAtOutlets(const World& world, std::size_t count);
+    /// True if some inserter has particles due at time t [s] (dt [s]: the step).
+    bool insertionDue(Real t, Real dt) const;
+    /// Appends the particles the inserters have due at world.time to the store (none overlapping
+    /// a particle or a wall), without joining them to the contact lists.
+    void insertNew(World& world, Real dt);
+    /// The box [m] a new particle can be placed in (every inserter's region; along a periodic axis
+    /// the domain's extent).
+    void insertionBounds(const PeriodicDomain& box, Vec3& lo, Vec3& hi) const;
 };
 
 } // namespace veridem::dem

@@ -105,52 +105,47 @@ struct ParticleStore
         return static_cast<std::uint32_t>(position.size() - 1);
     }
 
+    /// Calls f(&ParticleStore::array) for every per-particle array, in a fixed order: the one list
+    /// of the arrays that reserve, copyRow, appendRow and truncate (and a new array) go through.
+    template <class F> static void forEachArray(F&& f)
+    {
+        f(&ParticleStore::position);
+        f(&ParticleStore::velocity);
+        f(&ParticleStore::angularVelocity);
+        f(&ParticleStore::force);
+        f(&ParticleStore::torque);
+        f(&ParticleStore::radius);
+        f(&ParticleStore::mass);
+        f(&ParticleStore::invMass);
+        f(&ParticleStore::invInertia);
+        f(&ParticleStore::material);
+        f(&ParticleStore::id);
+        f(&ParticleStore::fixed);
+        f(&ParticleStore::positionRadius);
+    }
+
     void reserve(std::size_t n)
     {
-        for (auto* a : {&position, &velocity, &angularVelocity})
-            a->reserve(n);
-        force.reserve(n);
-        torque.reserve(n);
-        for (auto* a : {&radius, &mass, &invMass, &invInertia})
-            a->reserve(n);
-        material.reserve(n);
-        id.reserve(n);
-        fixed.reserve(n);
-        positionRadius.reserve(n);
+        forEachArray([&](auto array) { (this->*array).reserve(n); });
     }
 
     /// Copies particle `from`'s row (every array, its force and torque rows included) over
     /// particle `to`'s.
     void copyRow(std::size_t from, std::size_t to)
     {
-        position[to] = position[from];
-        velocity[to] = velocity[from];
-        angularVelocity[to] = angularVelocity[from];
-        force[to] = force[from];
-        torque[to] = torque[from];
-        radius[to] = radius[from];
-        mass[to] = mass[from];
-        invMass[to] = invMass[from];
-        invInertia[to] = invInertia[from];
-        material[to] = material[from];
-        id[to] = id[from];
-        fixed[to] = fixed[from];
-        positionRadius[to] = positionRadius[from];
+        forEachArray([&](auto array) { (this->*array)[to] = (this->*array)[from]; });
+    }
+
+    /// Appends particle i of `other` (every array: its row as it is there).
+    void appendRow(const ParticleStore& other, std::size_t i)
+    {
+        forEachArray([&](auto array) { (this->*array).push_back((other.*array)[i]); });
     }
 
     /// Keeps the first n particles (n <= size()).
     void truncate(std::size_t n)
     {
-        for (auto* a : {&position, &velocity, &angularVelocity})
-            a->resize(n);
-        force.resize(n);
-        torque.resize(n);
-        for (auto* a : {&radius, &mass, &invMass, &invInertia})
-            a->resize(n);
-        material.resize(n);
-        id.resize(n);
-        fixed.resize(n);
-        positionRadius.resize(n);
+        forEachArray([&](auto array) { (this->*array).resize(n); });
     }
 
     /// Removes particle i by moving the last particle into its place; the caller re-keys the

@@ -193,17 +193,7 @@ Halo splitWholeStore(dem::ParticleStore& p, const Decomposition& d, Real halo, i
     dem::ParticleStore kept;
     kept.reserve(order.size());
     for (const std::uint32_t i : order)
-    {
-        kept.add(p.position[i], p.velocity[i], p.angularVelocity[i], p.radius[i], 1.0, p.material[i]);
-        const std::size_t k = kept.size() - 1;
-        kept.force[k] = p.force[i];
-        kept.torque[k] = p.torque[i];
-        kept.mass[k] = p.mass[i];
-        kept.invMass[k] = p.invMass[i];
-        kept.invInertia[k] = p.invInertia[i];
-        kept.id[k] = p.id[i];
-        kept.fixed[k] = p.fixed[i];
-    }
+        kept.appendRow(p, i);
     p = std::move(kept);
     return h;
 }

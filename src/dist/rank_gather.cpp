@@ -104,7 +104,8 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     mine.reserve(owned * kGatherRowBytes);
     ByteWriter w{mine};
     for (std::size_t i = 0; i < owned; ++i)
-        putRow(w, p, i);
+        if (!p.retired(i)) // (an outlet took it: out of the outputs, as in one process)
+            putRow(w, p, i);
     KeyedHistory history;
     exportHistory(
         local, [&](std::uint32_t i) { return i < owned; }, history);
@@ -153,18 +154,7 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
               [&](std::uint32_t a, std::uint32_t b) { return gathered.id[a] < gathered.id[b]; });
     whole.particles.reserve(gathered.size());
     for (const std::uint32_t i : order)
-    {
-        dem::ParticleStore& q = whole.particles;
-        const std::size_t k = q.add(gathered.position[i], gathered.velocity[i], gathered.angularVelocity[i],
-                                    gathered.radius[i], 1.0, gathered.material[i]);
-        q.force[k] = gathered.force[i];
-        q.torque[k] = gathered.torque[i];
-        q.mass[k] = gathered.mass[i];
-        q.invMass[k] = gathered.invMass[i];
-        q.invInertia[k] = gathered.invInertia[i];
-        q.id[k] = gathered.id[i];
-        q.fixed[k] = gathered.fixed[i];
-    }
+        whole.particles.appendRow(gathered, i);
     adoptHistory(whole, sources);
     dem::refreshFixedParticles(whole);
     whole.prepared = true;
@@ -172,6 +162,60 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     if (local.wallContacts.recordLoads)
         setWallLoads(whole, sources);
     return whole;
+}
+
+namespace
+{
+dem::ParticleStore readRows(std::span<const std::byte> in, int from)
+{
+    if (in.size() % kGatherRowBytes != 0)
+        throw SimulationError("MPI exchange: " + std::to_string(in.size()) + " bytes of rows from rank " +
+                              std::to_string(from) + ", not a whole number of rows");
+    dem::ParticleStore rows;
+    ByteReader r{in};
+    while (!r.done())
+        getRow(r, rows);
+    return rows;
+}
+} // namespace
+
+dem::ParticleStore gatherParticlesIn(const dem::ParticleStore& local, std::size_t owned, const Vec3& lo,
+                                     const Vec3& hi, const Collective& comm, int root)
+{
+    Buffers out(static_cast<std::size_t>(comm.size()));
+    ByteWriter w{out[root]};
+    for (std::size_t i = 0; i < owned; ++i)
+    {
+        const Vec3& x = local.position[i];
+        if (!local.retired(i) && x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y && x.z >= lo.z &&
+            x.z <= hi.z)
+            putRow(w, local, i);
+    }
+    const Buffers in = comm.exchange(std::move(out));
+    dem::ParticleStore gathered;
+    if (comm.rank() != root)
+        return gathered;
+    for (int a = 0; a < comm.size(); ++a)
+    {
+        const dem::ParticleStore rows = readRows(in[a], a);
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            gathered.appendRow(rows, i);
+    }
+    return gathered;
+}
+
+dem::ParticleStore broadcastParticles(const dem::ParticleStore& rows, const Collective& comm, int root)
+{
+    Buffers out(static_cast<std::size_t>(comm.size()));
+    if (comm.rank() == root)
+        for (int b = 0; b < comm.size(); ++b)
+        {
+            ByteWriter w{out[b]};
+            for (std::size_t i = 0; i < rows.size(); ++i)
+                putRow(w, rows, i);
+        }
+    const Buffers in = comm.exchange(std::move(out));
+    return readRows(in[root], root);
 }
 
 } // namespace veridem::dist

@@ -21,4 +21,13 @@ namespace veridem::dist
 /// Collective. O(N) on the root.
 std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& ranks, int root = 0);
 
+/// On rank `root`: the owned particles of every rank whose centre lies in the box [lo, hi] [m]
+/// (rows whole), by rank and in each rank's order; elsewhere an empty store. Collective.
+dem::ParticleStore gatherParticlesIn(const dem::ParticleStore& local, std::size_t owned, const Vec3& lo,
+                                     const Vec3& hi, const Collective& comm, int root = 0);
+
+/// Every rank gets `rows` as rank `root` holds them (the other ranks' argument is ignored).
+/// Collective.
+dem::ParticleStore broadcastParticles(const dem::ParticleStore& rows, const Collective& comm, int root = 0);
+
 } // namespace veridem::dist

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "dem/forces.h"
+#include "dem/particle_changes.h"
 #include "dist/rank_history.h"
 
 #include <algorithm>
@@ -47,6 +48,8 @@ RankStep::RankStep(const Collective& comm, std::uint64_t rebalanceEvery)
 
 void RankStep::distribute(dem::World& world)
 {
+    if (world.prepared) // (a restored world: the particles its outlets retired leave first)
+        dem::removeRetiredParticles(world);
     dem::ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     // What prepare() sets from all the particles, set here for all ranks alike.
@@ -99,12 +102,29 @@ void RankStep::distribute(dem::World& world)
     dem::rebuildContactLists(world);
 }
 
-void RankStep::cut(const dem::World& world)
+void RankStep::cut(const dem::World& world, std::span<const std::uint8_t> gone)
 {
     const std::vector<std::uint32_t> weight = contactWeights(world, halo_.owned);
-    decomposition_ =
-        bisect(std::span(world.particles.position).first(halo_.owned), weight, comm_.size(), comm_);
+    std::vector<Vec3> x;
+    std::vector<std::uint32_t> w;
+    x.reserve(halo_.owned);
+    w.reserve(halo_.owned);
+    for (std::size_t i = 0; i < halo_.owned; ++i)
+        if (!gone[i]) // (a retired particle, parked far away, would stretch the bounds)
+        {
+            x.push_back(world.particles.position[i]);
+            w.push_back(weight[i]);
+        }
+    decomposition_ = bisect(x, w, comm_.size(), comm_);
     ++cuts_;
+}
+
+void RankStep::admit(dem::World& world, const dem::ParticleStore& arrivals)
+{
+    const auto start = Clock::now();
+    exchange(world, &arrivals);
+    dem::rebuildContactLists(world);
+    times_.exchange += seconds(start, Clock::now());
 }
 
 bool RankStep::afterDrift(dem::World& world, bool rebuild)
@@ -126,16 +146,19 @@ bool RankStep::afterDrift(dem::World& world, bool rebuild)
     return true;
 }
 
-void RankStep::exchange(dem::World& world)
+void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
 {
     dem::ParticleStore& p = world.particles;
     const std::size_t owned = halo_.owned;
+    std::vector<std::uint8_t> gone(owned); // retired by an outlet: they leave the store here
+    for (std::size_t i = 0; i < owned; ++i)
+        gone[i] = p.retired(i);
     if (++exchanges_ % rebalanceEvery_ == 0)
-        cut(world);
+        cut(world, gone);
     const int ranks = comm_.size(), me = comm_.rank();
     std::vector<int> dest(owned);
     for (std::size_t i = 0; i < owned; ++i)
-        dest[i] = decomposition_.owner(p.position[i]);
+        dest[i] = gone[i] ? -1 : decomposition_.owner(p.position[i]);
 
     // The history this rank keeps (a contact of a particle it still owns) and the history that
     // leaves with each migrant (every contact of it), in one pass over the lists.
@@ -161,7 +184,29 @@ void RankStep::exchange(dem::World& world)
         if (const int d = destination(walls.particle[k]); d >= 0)
             exportWallSlot(world, k, history[d]);
 
-    halo_ = exchangeParticles(p, owned, decomposition_, haloWidth_, comm_);
+    // The store: the owned particles that stay in it (in order), then the arrivals this rank's
+    // region holds; exchangeParticles then migrates and makes the ghosts.
+    p.truncate(owned);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < owned; ++i)
+        if (!gone[i])
+        {
+            if (kept != i)
+                p.copyRow(i, kept);
+            ++kept;
+        }
+    p.truncate(kept);
+    if (arrivals)
+        for (std::size_t i = 0; i < arrivals->size(); ++i)
+        {
+            if (decomposition_.owner(arrivals->position[i]) == me)
+                p.appendRow(*arrivals, i);
+            // (a larger particle than any before widens the halo on every rank alike: all see
+            // the same arrivals)
+            haloWidth_ =
+                std::max(haloWidth_, arrivals->radius[i] + world.neighbors.skin + world.neighbors.reach);
+        }
+    halo_ = exchangeParticles(p, p.size(), decomposition_, haloWidth_, comm_);
     exchangeBytes_ += halo_.bytesSent;
     Buffers out(static_cast<std::size_t>(ranks));
     for (int b = 0; b < ranks; ++b)

@@ -25,6 +25,7 @@
 #include "dist/halo.h"
 
 #include <cstdint>
+#include <span>
 
 namespace veridem::dist
 {
@@ -44,6 +45,14 @@ class RankStep final : public dem::RankExchange
     void distribute(dem::World& world);
 
     bool afterDrift(dem::World& world, bool rebuild) override;
+
+    /// Between steps: the particles `arrivals` (every rank passes the same rows, e.g. those an
+    /// inserter made) join the ranks whose regions hold them, with an exchange of particles (the
+    /// ones that left their region migrate, retired ones leave) and a rebuild of the contact
+    /// lists. Collective.
+    void admit(dem::World& world, const dem::ParticleStore& arrivals);
+    /// r_max + skin + touch reach [m]: how far from a region its ghosts reach.
+    Real haloWidth() const { return haloWidth_; }
     void combineHealth(dem::World& world) override;
 
     /// After a step whose combined health is bad: the id of the particle it names (the first
@@ -71,8 +80,10 @@ class RankStep final : public dem::RankExchange
     const Times& times() const { return times_; }
 
   private:
-    void cut(const dem::World& world);
-    void exchange(dem::World& world);
+    void cut(const dem::World& world, std::span<const std::uint8_t> gone);
+    /// The exchange of particles at a rebuild; `arrivals` (may be null): rows that join the
+    /// ranks whose regions hold them.
+    void exchange(dem::World& world, const dem::ParticleStore* arrivals = nullptr);
 
     const Collective& comm_;
     std::uint64_t rebalanceEvery_;

@@ -1,5 +1,5 @@
-# tests/dist/CMakeLists.txt: mpi_run_restart_other_ranks. -DVERIDEM, -DMPIEXEC, -DSCENE, -DCOMPARE,
-# -DWORK.
+# tests/dist/CMakeLists.txt: the mpi_run_* tests. -DVERIDEM, -DMPIEXEC, -DSCENE, -DSTOP (the step a
+# run stops at, to be continued on another rank count), -DCOMPARE, -DWORK.
 file(REMOVE_RECURSE ${WORK})
 function(run name)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -8,12 +8,14 @@ function(run name)
   endif()
   message(STATUS "${name}: ${out}")
 endfunction()
-set(np2 ${MPIEXEC} -np 2 ${VERIDEM} run ${SCENE} --quiet --threads 1)
 set(np1 ${VERIDEM} run ${SCENE} --quiet --threads 1)
-run("straight, 2 ranks" ${np2} --out ${WORK}/straight)
+set(np2 ${MPIEXEC} -np 2 ${VERIDEM} run ${SCENE} --quiet --threads 1)
+set(np4 ${MPIEXEC} -np 4 ${VERIDEM} run ${SCENE} --quiet --threads 1)
 run("straight, 1 process" ${np1} --out ${WORK}/single)
-run("2 ranks to step 500" ${np2} --out ${WORK}/two_one --stop-at-step 500)
+run("straight, 2 ranks" ${np2} --out ${WORK}/two)
+run("straight, 4 ranks" ${np4} --out ${WORK}/four)
+run("2 ranks to step ${STOP}" ${np2} --out ${WORK}/two_one --stop-at-step ${STOP})
 run("then 1 process" ${np1} --out ${WORK}/two_one --restart ${WORK}/two_one/checkpoint.bin)
-run("1 process to step 500" ${np1} --out ${WORK}/one_two --stop-at-step 500)
-run("then 2 ranks" ${np2} --out ${WORK}/one_two --restart ${WORK}/one_two/checkpoint.bin)
-run("compare" python3 ${COMPARE} ${WORK}/straight ${WORK}/single ${WORK}/two_one ${WORK}/one_two)
+run("1 process to step ${STOP}" ${np1} --out ${WORK}/one_four --stop-at-step ${STOP})
+run("then 4 ranks" ${np4} --out ${WORK}/one_four --restart ${WORK}/one_four/checkpoint.bin)
+run("compare" python3 ${COMPARE} ${WORK}/single ${WORK}/two ${WORK}/four ${WORK}/two_one ${WORK}/one_four)
