@@ -170,8 +170,8 @@ void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
                          " does not run on several MPI ranks yet; run this scene " +
                          "in one process (with --threads N for the cores)");
     };
-    if (scene.world.domain.any())
-        refuse("a periodic boundary");
+    if (scene.world.domain.periodic[0] && scene.world.domain.periodic[1] && scene.world.domain.periodic[2])
+        refuse("a domain periodic along all three axes (the regions are cut across non-periodic axes only)");
     if (scene.measurements.energy)
         refuse("[output] energy = true (the energy ledger)");
 }

@@ -59,11 +59,13 @@ struct Task
     bool done = false;
 };
 
-int longestAxis(const Box& b)
+int longestAxis(const Box& b, std::array<bool, 3> cuttable)
 {
-    int axis = 0;
-    for (int a = 1; a < 3; ++a)
-        if (component(b.hi, a) - component(b.lo, a) > component(b.hi, axis) - component(b.lo, axis))
+    int axis = -1;
+    for (int a = 0; a < 3; ++a)
+        if (cuttable[static_cast<std::size_t>(a)] &&
+            (axis < 0 ||
+             component(b.hi, a) - component(b.lo, a) > component(b.hi, axis) - component(b.lo, axis)))
             axis = a;
     return axis;
 }
@@ -111,8 +113,10 @@ void numberPartsDepthFirst(Decomposition& d)
 } // namespace
 
 Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32_t> weight, int parts,
-                     const Collective& comm)
+                     const Collective& comm, std::array<bool, 3> cuttable)
 {
+    if (!cuttable[0] && !cuttable[1] && !cuttable[2])
+        throw InputError("decomposition: no axis may be cut");
     if (parts < 1)
         throw InputError("the domain decomposition needs at least one part, got " + std::to_string(parts));
     if (weight.size() != position.size())
@@ -155,7 +159,7 @@ Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32
             t.done = t.parts == 1;
             if (t.done)
                 continue;
-            t.axis = longestAxis(t.bounds);
+            t.axis = longestAxis(t.bounds, cuttable);
             const int partsBelow = t.parts / 2;
             const std::uint64_t q = t.weight / t.parts, rem = t.weight % t.parts;
             t.target = q * partsBelow + rem * partsBelow / t.parts; // floor(weight * below / parts)

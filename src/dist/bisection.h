@@ -25,6 +25,7 @@
 #include "core/vec3.h"
 #include "dist/collective.h"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -78,10 +79,12 @@ class Decomposition
 };
 
 /// Cuts the particles at `position` [m] (this rank's; every rank calls it with its own) with
-/// weights `weight` into `parts` regions by recursive coordinate bisection (file comment).
-/// Collective: every rank of `comm` must call it; every rank gets the same decomposition.
+/// weights `weight` into `parts` regions by recursive coordinate bisection (file comment), cutting
+/// only the axes marked `cuttable` (the longest of those; a periodic axis is not cut, so each
+/// region spans it whole). Collective: every rank of `comm` must call it; every rank gets the same
+/// decomposition.
 Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32_t> weight, int parts,
-                     const Collective& comm);
+                     const Collective& comm, std::array<bool, 3> cuttable = {true, true, true});
 
 template <class F> void Decomposition::forEachPartNear(const Vec3& x, Real reach, F&& f) const
 {

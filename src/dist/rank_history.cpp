@@ -10,12 +10,14 @@
 namespace veridem::dist
 {
 
-void exportPair(const dem::World& world, std::size_t a, KeyedHistory& out)
+namespace
 {
-    const dem::NeighborList& list = world.neighbors;
-    const dem::ContactHistoryStore& h = world.pairHistory;
-    const std::uint32_t idI = world.particles.id[list.activeFirst[a]];
-    const std::uint32_t idJ = world.particles.id[list.activeSecond[a]];
+/// Entry a of `h`, the history of the pair of particles (i, j) (local, as the law saw them).
+void exportPairOf(const dem::World& world, std::uint32_t i, std::uint32_t j,
+                  const dem::ContactHistoryStore& h, std::size_t a, KeyedHistory& out)
+{
+    const std::uint32_t idI = world.particles.id[i];
+    const std::uint32_t idJ = world.particles.id[j];
     // (i, j) local; the entry is (lo, hi) by id: the springs change sign if the orders differ.
     const Real sign = idI < idJ ? 1.0 : -1.0;
     PairHistoryEntry e;
@@ -26,6 +28,19 @@ void exportPair(const dem::World& world, std::size_t a, KeyedHistory& out)
         e.rolling = sign * h.rolling[a];
     e.formed = h.keepFormed && h.formed.size() == h.size() ? h.formed[a] : 1;
     out.pairs.push_back(e);
+}
+} // namespace
+
+void exportPair(const dem::World& world, std::size_t a, KeyedHistory& out)
+{
+    exportPairOf(world, world.neighbors.activeFirst[a], world.neighbors.activeSecond[a], world.pairHistory, a,
+                 out);
+}
+
+void exportPeriodicPair(const dem::World& world, std::size_t k, KeyedHistory& out)
+{
+    const dem::PeriodicPairs& p = world.periodicPairs;
+    exportPairOf(world, p.first[k], p.second[k], p.history, k, out);
 }
 
 void exportWallSlot(const dem::World& world, std::size_t k, KeyedHistory& out)
@@ -247,6 +262,9 @@ void adoptWalls(dem::World& world, const LocalIndex& local, std::span<const Keye
 
 void adoptHistory(dem::World& world, std::span<const KeyedHistory> sources)
 {
+    // (the periodic pairs name old indices: their entries come back as candidates, which
+    // PeriodicPairs::rebuild takes over by key)
+    world.periodicPairs.clear();
     const LocalIndex local(world.particles);
     adoptPairs(world, local, sources);
     adoptWalls(world, local, sources);

@@ -55,25 +55,37 @@ void packHistory(const KeyedHistory& h, std::vector<std::byte>& out);
 KeyedHistory unpackHistory(std::span<const std::byte> in, int from);
 
 /// Gives world's contact lists the entries of `sources` whose particles it holds, under their
-/// local indices, replacing the lists' own candidates and slots (an entry whose key came earlier,
-/// in an earlier source or the same one, wins; a wall group is kept whole from one source). The
+/// local indices, replacing the lists' own candidates and slots (and emptying the periodic pairs:
+/// their entries become candidates, which PeriodicPairs::rebuild takes over by key) (an entry whose key came
+/// earlier, in an earlier source or the same one, wins; a wall group is kept whole from one source). The
 /// rebuild of the contact lists must follow (it carries the history by key).
 void adoptHistory(dem::World& world, std::span<const KeyedHistory> sources);
 
 // ---
 
 void exportPair(const dem::World& world, std::size_t a, KeyedHistory& out);
+/// Periodic pair k (World::periodicPairs) as a pair entry: its history continues through the
+/// candidates it is adopted into (PeriodicPairs::rebuild takes it from them by key).
+void exportPeriodicPair(const dem::World& world, std::size_t k, KeyedHistory& out);
+/// True if entry a of `h` may hold a contact (formed, or a non-zero spring where not kept).
+inline bool mayBeFormed(const dem::ContactHistoryStore& h, std::size_t a)
+{
+    return h.keepFormed && h.formed.size() == h.spring.size() ? h.formed[a] != 0
+                                                              : lengthSquared(h.spring[a]) > 0;
+}
 void exportWallSlot(const dem::World& world, std::size_t k, KeyedHistory& out);
 
 template <class Take> void exportHistory(const dem::World& world, Take&& take, KeyedHistory& out)
 {
     const dem::NeighborList& list = world.neighbors;
     const dem::ContactHistoryStore& h = world.pairHistory;
-    const bool formed = h.keepFormed && h.formed.size() == h.spring.size();
     for (std::size_t a = 0; a < list.activeFirst.size() && a < h.size(); ++a)
-        if ((formed ? h.formed[a] != 0 : lengthSquared(h.spring[a]) > 0) &&
-            (take(list.activeFirst[a]) || take(list.activeSecond[a])))
+        if (mayBeFormed(h, a) && (take(list.activeFirst[a]) || take(list.activeSecond[a])))
             exportPair(world, a, out);
+    const dem::PeriodicPairs& periodic = world.periodicPairs;
+    for (std::size_t k = 0; k < periodic.size() && k < periodic.history.size(); ++k)
+        if (mayBeFormed(periodic.history, k) && (take(periodic.first[k]) || take(periodic.second[k])))
+            exportPeriodicPair(world, k, out);
     const dem::WallContactList& walls = world.wallContacts;
     for (std::size_t k = 0; k < walls.particle.size() && k < world.wallHistory.size(); ++k)
         if (take(walls.particle[k]))

@@ -6,6 +6,7 @@
 #include "dist/rank_history.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <limits>
 #include <span>
@@ -24,6 +25,14 @@ double seconds(Clock::time_point from, Clock::time_point to)
 }
 
 constexpr Real kLeast = std::numeric_limits<Real>::min(); // (a halo of no particles: > 0)
+
+/// The axes the regions may be cut across: not a periodic one (a region spans it whole, so the
+/// pairs through its faces are among a rank's owned particles and ghosts, and PeriodicPairs finds
+/// them as in one process).
+std::array<bool, 3> cuttable(const dem::World& world)
+{
+    return {!world.domain.periodic[0], !world.domain.periodic[1], !world.domain.periodic[2]};
+}
 
 /// Each particle's cost for the cut: 1 plus its touching candidates (the pair stage's work).
 std::vector<std::uint32_t> contactWeights(const dem::World& world, std::size_t count)
@@ -65,7 +74,7 @@ void RankStep::distribute(dem::World& world)
     const std::size_t lo = n * me / ranks, hi = n * (me + 1) / ranks;
     const std::vector<std::uint32_t> weight = contactWeights(world, n);
     decomposition_ = bisect(std::span(p.position).subspan(lo, hi - lo),
-                            std::span(weight).subspan(lo, hi - lo), comm_.size(), comm_);
+                            std::span(weight).subspan(lo, hi - lo), comm_.size(), comm_, cuttable(world));
     ++cuts_;
 
     if (!world.prepared) // a fresh start: prepare this rank's part only (no contacts yet to carry)
@@ -115,7 +124,7 @@ void RankStep::cut(const dem::World& world, std::span<const std::uint8_t> gone)
             x.push_back(world.particles.position[i]);
             w.push_back(weight[i]);
         }
-    decomposition_ = bisect(x, w, comm_.size(), comm_);
+    decomposition_ = bisect(x, w, comm_.size(), comm_, cuttable(world));
     ++cuts_;
 }
 
@@ -164,21 +173,27 @@ void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
     // leaves with each migrant (every contact of it), in one pass over the lists.
     std::vector<KeyedHistory> history(static_cast<std::size_t>(ranks)); // [me]: kept here
     const auto destination = [&](std::uint32_t i) { return i < owned ? dest[i] : -1; };
-    const dem::NeighborList& list = world.neighbors;
-    const dem::ContactHistoryStore& pairs = world.pairHistory;
-    const bool formed = pairs.keepFormed && pairs.formed.size() == pairs.size();
-    for (std::size_t a = 0; a < list.activeFirst.size() && a < pairs.size(); ++a)
+    // (a pair goes to each rank that owns one of its particles after the exchange)
+    const auto sendPair = [&](std::uint32_t i, std::uint32_t j, auto&& put)
     {
-        if (!(formed ? pairs.formed[a] != 0 : lengthSquared(pairs.spring[a]) > 0))
-            continue;
-        const int di = destination(list.activeFirst[a]), dj = destination(list.activeSecond[a]);
+        const int di = destination(i), dj = destination(j);
         if (di == me || dj == me)
-            exportPair(world, a, history[me]);
+            put(history[me]);
         if (di >= 0 && di != me)
-            exportPair(world, a, history[di]);
+            put(history[di]);
         if (dj >= 0 && dj != me && dj != di)
-            exportPair(world, a, history[dj]);
-    }
+            put(history[dj]);
+    };
+    const dem::NeighborList& list = world.neighbors;
+    for (std::size_t a = 0; a < list.activeFirst.size() && a < world.pairHistory.size(); ++a)
+        if (mayBeFormed(world.pairHistory, a))
+            sendPair(list.activeFirst[a], list.activeSecond[a],
+                     [&](KeyedHistory& h) { exportPair(world, a, h); });
+    const dem::PeriodicPairs& periodic = world.periodicPairs;
+    for (std::size_t k = 0; k < periodic.size() && k < periodic.history.size(); ++k)
+        if (mayBeFormed(periodic.history, k))
+            sendPair(periodic.first[k], periodic.second[k],
+                     [&](KeyedHistory& h) { exportPeriodicPair(world, k, h); });
     const dem::WallContactList& walls = world.wallContacts;
     for (std::size_t k = 0; k < walls.particle.size() && k < world.wallHistory.size(); ++k)
         if (const int d = destination(walls.particle[k]); d >= 0)
