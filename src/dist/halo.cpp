@@ -22,7 +22,9 @@ void checkSize(std::size_t bytes, std::size_t record, std::size_t expected, cons
                               " records of " + std::to_string(record));
 }
 
-void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i)
+/// Particle i's row; a migrant's (`withForce`) with its force and torque: between steps they are
+/// the step's totals, which the next kick-drift reads.
+void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i, bool withForce)
 {
     w.put(p.id[i]);
     w.put(p.material[i]);
@@ -32,15 +34,21 @@ void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i)
     w.put(p.angularVelocity[i]);
     for (const Real v : {p.radius[i], p.mass[i], p.invMass[i], p.invInertia[i]})
         w.put(v);
+    if (withForce)
+    {
+        w.put(Vec3(p.force[i]));
+        w.put(Vec3(p.torque[i]));
+    }
 }
 
-/// Appends the rows of `in` to the store (zero force and torque); returns how many.
-std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int from)
+/// Appends the rows of `in` to the store (a ghost's with zero force and torque); returns how many.
+std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int from, bool withForce)
 {
-    if (in.size() % kRowBytes != 0)
-        checkSize(in.size(), kRowBytes, in.size() / kRowBytes, "particle rows", from);
+    const std::size_t bytes = withForce ? kMigrantBytes : kRowBytes;
+    if (in.size() % bytes != 0)
+        checkSize(in.size(), bytes, in.size() / bytes, "particle rows", from);
     ByteReader r{in};
-    const std::size_t count = in.size() / kRowBytes;
+    const std::size_t count = in.size() / bytes;
     for (std::size_t k = 0; k < count; ++k)
     {
         p.id.push_back(r.get<std::uint32_t>());
@@ -53,8 +61,8 @@ std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int fr
         p.mass.push_back(r.get<Real>());
         p.invMass.push_back(r.get<Real>());
         p.invInertia.push_back(r.get<Real>());
-        p.force.emplace_back();
-        p.torque.emplace_back();
+        p.force.emplace_back(withForce ? r.vec3() : Vec3{});
+        p.torque.emplace_back(withForce ? r.vec3() : Vec3{});
         p.positionRadius.push_back(p.positionRadiusRow(p.size() - 1));
     }
     return count;
@@ -97,11 +105,11 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     std::vector<std::uint8_t> leaving(p.size(), 0);
     for (int b = 0; b < ranks; ++b)
     {
-        out[b].reserve(leave.migrate[b].size() * kRowBytes);
+        out[b].reserve(leave.migrate[b].size() * kMigrantBytes);
         ByteWriter w{out[b]};
         for (const std::uint32_t i : leave.migrate[b])
         {
-            putRow(w, p, i);
+            putRow(w, p, i, true);
             leaving[i] = 1;
         }
         h.bytesSent += out[b].size();
@@ -118,7 +126,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     Buffers in = comm.exchange(std::move(out));
     for (int a = 0; a < ranks; ++a)
         if (a != me)
-            addRows(in[a], p, a);
+            addRows(in[a], p, a, true);
     h.owned = p.size();
 
     // Ghosts: every owned particle to each rank whose region is within r_i + halo.
@@ -129,7 +137,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
         out[b].reserve(near.ghost[b].size() * kRowBytes);
         ByteWriter w{out[b]};
         for (const std::uint32_t i : near.ghost[b])
-            putRow(w, p, i);
+            putRow(w, p, i, false);
         h.bytesSent += out[b].size();
     }
     h.sent = near.ghost;
@@ -140,7 +148,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     {
         h.ghostFirst[a] = p.size();
         if (a != me)
-            h.ghostCount[a] = addRows(in[a], p, a);
+            h.ghostCount[a] = addRows(in[a], p, a, false);
     }
     return h;
 }

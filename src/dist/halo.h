@@ -2,8 +2,9 @@
 // of the other ranks' particles that can touch them (dist/exchange_plan.h), in one ParticleStore,
 // and the three exchanges a distributed step needs (docs/architecture.md, "MPI"):
 //   - exchangeParticles, at a decomposition or a rebuild of the contact lists: particles that left
-//     the rank's region migrate to their owner with their whole row (every array of the store but
-//     force and torque), and the ghosts are made afresh: 113 bytes a particle;
+//     the rank's region migrate to their owner with their whole row (161 bytes: every array of the
+//     store, force and torque included), and the ghosts are made afresh (113 bytes: all but force
+//     and torque);
 //   - refreshGhosts, every step after the drift: each ghost's position, velocity and angular
 //     velocity from its owner, 72 bytes a ghost;
 //   - returnGhostForces, every step after the pair stage: the force and torque a rank summed on
@@ -32,9 +33,12 @@
 namespace veridem::dist
 {
 
-/// Bytes a particle's whole row takes in an exchange (migration, new ghosts): id, material, fixed
-/// flag, position, velocity, angular velocity, radius, mass, 1/mass, 1/inertia.
+/// Bytes a particle's row takes as a new ghost: id, material, fixed flag, position, velocity,
+/// angular velocity, radius, mass, 1/mass, 1/inertia.
 inline constexpr std::size_t kRowBytes = 4 + 4 + 1 + 9 * 8 + 4 * 8;
+/// Bytes a migrant's row takes: a ghost's, then its force and torque (between steps, the step's
+/// totals, which the next kick-drift reads).
+inline constexpr std::size_t kMigrantBytes = kRowBytes + 6 * 8;
 /// Bytes a ghost's motion takes (refreshGhosts): position, velocity, angular velocity.
 inline constexpr std::size_t kMotionBytes = 9 * 8;
 /// Bytes a ghost's force and torque take (returnGhostForces).

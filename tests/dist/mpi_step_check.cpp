@@ -6,7 +6,9 @@
 //     must migrate with it. Its one contact is the floor, so its motion is the reference's bit for
 //     bit; and it reaches v_f = 5/7 v0 (1e-6, as the verification case: angular momentum about the
 //     contact point is kept to round-off) at t* = 2 v0 / (7 mu g) (0.5 %). With N >= 2 the ball
-//     must have changed rank (else the check proves nothing).
+//     must have changed rank (else the check proves nothing). Run twice: with the exchanges of the
+//     step only, and with one between every two steps too (as at a flow event), where the ball's
+//     force and torque must migrate with it (the next kick-drift reads them).
 //   - a pour: 2,156 spheres with EPSD rolling springs rain into a box (4 walls and a floor; the
 //     example box_fill, filled higher) for 1,500 steps, through impacts and the first contacts of the heap.
 //     Every particle is owned by one rank (ids 0..N-1 once each); a second run on the same rank count gives
@@ -122,7 +124,10 @@ BallState ballState(const dem::World& world, const RankStep* ranks, const Collec
             int(values[9])};
 }
 
-void bowlingBall(const Collective& comm)
+/// `betweenSteps`: an exchange of particles between every two steps as well (RankStep::admit, as
+/// at a flow event), so that the ball migrates between steps, where its force and torque (the
+/// step's totals, read by the next kick-drift) must travel with it.
+void bowlingBall(const Collective& comm, bool betweenSteps)
 {
     const Real dt = 1e-5, duration = 0.3;
     const auto steps = static_cast<std::uint64_t>(std::llround(duration / dt));
@@ -137,16 +142,18 @@ void bowlingBall(const Collective& comm)
     {
         dem::step(reference, dt);
         dem::step(world, dt);
+        if (betweenSteps)
+            ranks.admit(world, dem::ParticleStore{});
         const BallState b = ballState(world, &ranks, comm);
         if (identical && !(sameBits(b.x, reference.particles.position[0]) &&
                            sameBits(b.v, reference.particles.velocity[0]) &&
                            sameBits(b.w, reference.particles.angularVelocity[0])))
         {
             identical = false;
-            fail("bowling ball: step " + std::to_string(s + 1) +
-                 ": the ball's state differs from one process's (x " + std::to_string(b.x.x) + " m, v " +
-                 std::to_string(b.v.x) + " against " + std::to_string(reference.particles.velocity[0].x) +
-                 " m/s)");
+            fail(std::string("bowling ball") + (betweenSteps ? " (exchanges between steps)" : "") +
+                 ": step " + std::to_string(s + 1) + ": the ball's state differs from one process's (x " +
+                 std::to_string(b.x.x) + " m, v " + std::to_string(b.v.x) + " against " +
+                 std::to_string(reference.particles.velocity[0].x) + " m/s)");
         }
         const Real slip = b.v.x - kBallRadius * b.w.y;
         if (tStar < 0 && slip <= 0)
@@ -165,9 +172,10 @@ void bowlingBall(const Collective& comm)
         fail("bowling ball: the ball stayed on rank " + std::to_string(end.owner) +
              " (x = " + std::to_string(end.x.x) + " m): no migration was checked");
     if (comm.rank() == 0)
-        std::printf("bowling ball: v_f / (5/7 v0) - 1 = %.2e, t* / theory - 1 = %.2e, ranks %d -> %d, %llu "
+        std::printf("bowling ball%s: v_f / (5/7 v0) - 1 = %.2e, t* / theory - 1 = %.2e, ranks %d -> %d, %llu "
                     "exchanges, identical to one process: %s\n",
-                    vFinal / (5.0 / 7.0 * kV0) - 1, tStar / tTheory - 1, firstOwner, end.owner,
+                    betweenSteps ? " (exchanges between steps)" : "", vFinal / (5.0 / 7.0 * kV0) - 1,
+                    tStar / tTheory - 1, firstOwner, end.owner,
                     static_cast<unsigned long long>(ranks.exchanges()), identical ? "yes" : "no");
 }
 
@@ -377,7 +385,8 @@ int main(int argc, char** argv)
         const MpiCollective comm;
         try
         {
-            bowlingBall(comm);
+            bowlingBall(comm, false);
+            bowlingBall(comm, true);
             pour(comm);
             loadBalance(comm);
         }
