@@ -87,7 +87,7 @@ int Halo::neighbours() const
 }
 
 Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposition& d, Real halo,
-                       const Collective& comm)
+                       const Collective& comm, bool betweenSteps)
 {
     const int ranks = comm.size(), me = comm.rank();
     if (d.parts() != ranks)
@@ -105,11 +105,11 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     std::vector<std::uint8_t> leaving(p.size(), 0);
     for (int b = 0; b < ranks; ++b)
     {
-        out[b].reserve(leave.migrate[b].size() * kMigrantBytes);
+        out[b].reserve(leave.migrate[b].size() * (betweenSteps ? kMigrantBytes : kRowBytes));
         ByteWriter w{out[b]};
         for (const std::uint32_t i : leave.migrate[b])
         {
-            putRow(w, p, i, true);
+            putRow(w, p, i, betweenSteps);
             leaving[i] = 1;
         }
         h.bytesSent += out[b].size();
@@ -126,7 +126,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     Buffers in = comm.exchange(std::move(out));
     for (int a = 0; a < ranks; ++a)
         if (a != me)
-            addRows(in[a], p, a, true);
+            addRows(in[a], p, a, betweenSteps);
     h.owned = p.size();
 
     // Ghosts: every owned particle to each rank whose region is within r_i + halo.

@@ -2,9 +2,9 @@
 // of the other ranks' particles that can touch them (dist/exchange_plan.h), in one ParticleStore,
 // and the three exchanges a distributed step needs (docs/architecture.md, "MPI"):
 //   - exchangeParticles, at a decomposition or a rebuild of the contact lists: particles that left
-//     the rank's region migrate to their owner with their whole row (161 bytes: every array of the
-//     store, force and torque included), and the ghosts are made afresh (113 bytes: all but force
-//     and torque);
+//     the rank's region migrate to their owner with their whole row (113 bytes: every array of the
+//     store but force and torque, which are added between steps: 161 bytes), and the ghosts are
+//     made afresh (113 bytes);
 //   - refreshGhosts, every step after the drift: each ghost's position, velocity and angular
 //     velocity from its owner, 72 bytes a ghost;
 //   - returnGhostForces, every step after the pair stage: the force and torque a rank summed on
@@ -36,7 +36,7 @@ namespace veridem::dist
 /// Bytes a particle's row takes as a new ghost: id, material, fixed flag, position, velocity,
 /// angular velocity, radius, mass, 1/mass, 1/inertia.
 inline constexpr std::size_t kRowBytes = 4 + 4 + 1 + 9 * 8 + 4 * 8;
-/// Bytes a migrant's row takes: a ghost's, then its force and torque (between steps, the step's
+/// Bytes a migrant's row takes between steps: a ghost's, then its force and torque (the step's
 /// totals, which the next kick-drift reads).
 inline constexpr std::size_t kMigrantBytes = kRowBytes + 6 * 8;
 /// Bytes a ghost's motion takes (refreshGhosts): position, velocity, angular velocity.
@@ -62,9 +62,13 @@ struct Halo
 /// Migrates the store's particles to their owners under `d` and makes the ghosts afresh (file
 /// comment). On entry the store holds this rank's particles (owned or not, ghosts dropped: pass
 /// the previous Halo's owned count in `keep`); on return it holds the owned ones, then the
-/// ghosts. halo [m] > 0. Collective.
+/// ghosts. halo [m] > 0. `betweenSteps`: the force and torque rows are the step's totals, which
+/// the next kick-drift reads, and migrants carry them (kMigrantBytes); inside a step (after the
+/// kick-drift) they arrive zero, as the pair stage expects of the rows it does not zero (a rank
+/// whose previous step was fused left its own rows zero, while its neighbour's may hold sums).
+/// Collective.
 Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposition& d, Real halo,
-                       const Collective& comm);
+                       const Collective& comm, bool betweenSteps = false);
 
 /// The Halo of rank `me` when every rank holds every particle (all read the same scene or
 /// checkpoint): the store keeps the particles `d` gives this rank, in their order, then the ghosts

@@ -221,7 +221,7 @@ void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
             haloWidth_ =
                 std::max(haloWidth_, arrivals->radius[i] + world.neighbors.skin + world.neighbors.reach);
         }
-    halo_ = exchangeParticles(p, p.size(), decomposition_, haloWidth_, comm_);
+    halo_ = exchangeParticles(p, p.size(), decomposition_, haloWidth_, comm_, arrivals != nullptr);
     exchangeBytes_ += halo_.bytesSent;
     Buffers out(static_cast<std::size_t>(ranks));
     for (int b = 0; b < ranks; ++b)

@@ -81,8 +81,9 @@ class RankStep final : public dem::RankExchange
 
   private:
     void cut(const dem::World& world, std::span<const std::uint8_t> gone);
-    /// The exchange of particles at a rebuild; `arrivals` (may be null): rows that join the
-    /// ranks whose regions hold them.
+    /// The exchange of particles at a rebuild; `arrivals` (may be null: inside a step): rows that
+    /// join the ranks whose regions hold them, between steps (admit), when migrants carry their
+    /// force and torque (exchangeParticles' betweenSteps).
     void exchange(dem::World& world, const dem::ParticleStore* arrivals = nullptr);
 
     const Collective& comm_;
