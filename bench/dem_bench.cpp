@@ -1,4 +1,6 @@
 // veridem_bench: the reference many-sphere benchmark of issue 5 (docs/performance.md).
+// (Above 500 lines: one driver for every benchmark scene, whose options, scene builders and report
+// are read together when comparing runs; the scenes share the bed's material and walls.)
 //
 //   veridem_bench [--scene bed|gas|turntable|drum] [--file XYZ] [--tile N] [--steps S] [--threads T]
 //                 [--warmup W] [--profile] [--repeat R] [--no-sort] [--no-fusion] [--spin-ns NS]

@@ -1,6 +1,7 @@
 // `veridem run` for 3D DEM scenes: read, check the time step (or restore a checkpoint), step with
 // output and checkpoints between steps, stop cleanly on a blow-up (keeping the output written so
 // far) or on SIGINT/SIGTERM (with a checkpoint), print a summary.
+#include "app/quiet_stderr.h"
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "dem/time_step.h"
@@ -23,11 +24,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fcntl.h> // open
 #include <optional>
 #include <sstream>
 #include <string>
-#include <unistd.h> // dup, dup2
 
 namespace veridem::app
 {
@@ -128,38 +127,6 @@ void printRollingFrictionConversion(const dem::World& world)
                 material.rollingFrictionDimensionless * smallest / 2, smallest);
     }
 }
-
-/// Silences this process's stderr while it lives, if `quiet` (an error still reaches the user: it
-/// is printed after the scope, by main).
-class QuietStderr
-{
-  public:
-    explicit QuietStderr(bool quiet)
-    {
-        if (!quiet)
-            return;
-        std::fflush(stderr);
-        saved_ = dup(STDERR_FILENO);
-        const int null = open("/dev/null", O_WRONLY);
-        if (saved_ < 0 || null < 0)
-            return;
-        dup2(null, STDERR_FILENO);
-        close(null);
-    }
-    ~QuietStderr()
-    {
-        if (saved_ < 0)
-            return;
-        std::fflush(stderr);
-        dup2(saved_, STDERR_FILENO);
-        close(saved_);
-    }
-    QuietStderr(const QuietStderr&) = delete;
-    QuietStderr& operator=(const QuietStderr&) = delete;
-
-  private:
-    int saved_ = -1;
-};
 
 /// Refuses what does not run on several MPI ranks yet, naming it.
 void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
