@@ -79,7 +79,6 @@ void RankStep::distribute(dem::World& world)
 
     if (!world.prepared) // a fresh start: prepare this rank's part only (no contacts yet to carry)
     {
-        haloWidth_ = 0;
         halo_ = splitWholeStore(p, decomposition_, std::max(largest + world.neighbors.skin, kLeast),
                                 comm_.rank());
         dem::prepare(world);

@@ -7,8 +7,8 @@
 //     bit; and it reaches v_f = 5/7 v0 (1e-6, as the verification case: angular momentum about the
 //     contact point is kept to round-off) at t* = 2 v0 / (7 mu g) (0.5 %). With N >= 2 the ball
 //     must have changed rank (else the check proves nothing). Run twice: with the exchanges of the
-//     step only, and with one between every two steps too (as at a flow event), where the ball's
-//     force and torque must migrate with it (the next kick-drift reads them).
+//     step only, and with one after every 5th step too (as at a flow event), where the ball must
+//     migrate (checked) with its force and torque (the next kick-drift reads them).
 //   - a pour: 2,156 spheres with EPSD rolling springs rain into a box (4 walls and a floor; the
 //     example box_fill, filled higher) for 1,500 steps, through impacts and the first contacts of the heap.
 //     Every particle is owned by one rank (ids 0..N-1 once each); a second run on the same rank count gives
@@ -124,9 +124,9 @@ BallState ballState(const dem::World& world, const RankStep* ranks, const Collec
             int(values[9])};
 }
 
-/// `betweenSteps`: an exchange of particles between every two steps as well (RankStep::admit, as
-/// at a flow event), so that the ball migrates between steps, where its force and torque (the
-/// step's totals, read by the next kick-drift) must travel with it.
+/// `betweenSteps`: an exchange of particles after every 5th step as well (RankStep::admit, as at a
+/// flow event), so that the ball migrates between steps, where its force and torque (the step's
+/// totals, read by the next kick-drift) must travel with it; that it did is checked (with N >= 2).
 void bowlingBall(const Collective& comm, bool betweenSteps)
 {
     const Real dt = 1e-5, duration = 0.3;
@@ -137,13 +137,17 @@ void bowlingBall(const Collective& comm, bool betweenSteps)
     ranks.distribute(world);
     const int firstOwner = ballState(world, &ranks, comm).owner;
     Real tStar = -1, previousSlip = kV0, previousT = 0;
-    bool identical = true;
+    bool identical = true, migratedBetweenSteps = false;
     for (std::uint64_t s = 0; s < steps; ++s)
     {
         dem::step(reference, dt);
         dem::step(world, dt);
-        if (betweenSteps)
+        if (betweenSteps && (s + 1) % 5 == 0)
+        {
+            const int before = ballState(world, &ranks, comm).owner;
             ranks.admit(world, dem::ParticleStore{});
+            migratedBetweenSteps = migratedBetweenSteps || ballState(world, &ranks, comm).owner != before;
+        }
         const BallState b = ballState(world, &ranks, comm);
         if (identical && !(sameBits(b.x, reference.particles.position[0]) &&
                            sameBits(b.v, reference.particles.velocity[0]) &&
@@ -168,6 +172,10 @@ void bowlingBall(const Collective& comm, bool betweenSteps)
              " m/s, expected 5/7 v0 = " + std::to_string(5.0 / 7.0 * kV0));
     if (!(std::abs(tStar / tTheory - 1) < 5e-3))
         fail("bowling ball: t* = " + std::to_string(tStar) + " s, expected " + std::to_string(tTheory));
+    if (comm.size() > 1 && betweenSteps && !migratedBetweenSteps)
+        fail("bowling ball (exchanges between steps): the ball never migrated between steps (no such "
+             "migration "
+             "was checked)");
     if (comm.size() > 1 && end.owner == firstOwner)
         fail("bowling ball: the ball stayed on rank " + std::to_string(end.owner) +
              " (x = " + std::to_string(end.x.x) + " m): no migration was checked");
