@@ -22,10 +22,11 @@ void checkSize(std::size_t bytes, std::size_t record, std::size_t expected, cons
                               " records of " + std::to_string(record));
 }
 
-/// Particle i's row; a migrant's (`withForce`) with its force and torque: between steps they are
-/// the step's totals, which the next kick-drift reads.
-void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i, bool withForce)
+} // namespace
+
+void putParticleRow(std::vector<std::byte>& out, const dem::ParticleStore& p, std::size_t i, bool withForce)
 {
+    ByteWriter w{out};
     w.put(p.id[i]);
     w.put(p.material[i]);
     w.put(p.fixed[i]);
@@ -41,8 +42,7 @@ void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i, bool with
     }
 }
 
-/// Appends the rows of `in` to the store (a ghost's with zero force and torque); returns how many.
-std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int from, bool withForce)
+std::size_t addParticleRows(std::span<const std::byte> in, dem::ParticleStore& p, int from, bool withForce)
 {
     const std::size_t bytes = withForce ? kMigrantBytes : kRowBytes;
     if (in.size() % bytes != 0)
@@ -67,8 +67,6 @@ std::size_t addRows(std::span<const std::byte> in, dem::ParticleStore& p, int fr
     }
     return count;
 }
-
-} // namespace
 
 std::size_t Halo::ghosts() const
 {
@@ -106,10 +104,9 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     for (int b = 0; b < ranks; ++b)
     {
         out[b].reserve(leave.migrate[b].size() * (betweenSteps ? kMigrantBytes : kRowBytes));
-        ByteWriter w{out[b]};
         for (const std::uint32_t i : leave.migrate[b])
         {
-            putRow(w, p, i, betweenSteps);
+            putParticleRow(out[b], p, i, betweenSteps);
             leaving[i] = 1;
         }
         h.bytesSent += out[b].size();
@@ -126,7 +123,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     Buffers in = comm.exchange(std::move(out));
     for (int a = 0; a < ranks; ++a)
         if (a != me)
-            addRows(in[a], p, a, betweenSteps);
+            addParticleRows(in[a], p, a, betweenSteps);
     h.owned = p.size();
 
     // Ghosts: every owned particle to each rank whose region is within r_i + halo.
@@ -135,9 +132,8 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     for (int b = 0; b < ranks; ++b)
     {
         out[b].reserve(near.ghost[b].size() * kRowBytes);
-        ByteWriter w{out[b]};
         for (const std::uint32_t i : near.ghost[b])
-            putRow(w, p, i, false);
+            putParticleRow(out[b], p, i, false);
         h.bytesSent += out[b].size();
     }
     h.sent = near.ghost;
@@ -148,7 +144,7 @@ Halo exchangeParticles(dem::ParticleStore& p, std::size_t keep, const Decomposit
     {
         h.ghostFirst[a] = p.size();
         if (a != me)
-            h.ghostCount[a] = addRows(in[a], p, a, false);
+            h.ghostCount[a] = addParticleRows(in[a], p, a, false);
     }
     return h;
 }

@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace veridem::dist
@@ -43,6 +44,14 @@ inline constexpr std::size_t kMigrantBytes = kRowBytes + 6 * 8;
 inline constexpr std::size_t kMotionBytes = 9 * 8;
 /// Bytes a ghost's force and torque take (returnGhostForces).
 inline constexpr std::size_t kForceBytes = 6 * 8;
+
+/// Appends particle i's row to `out` (kRowBytes; with `withForce`, kMigrantBytes: its force and
+/// torque too).
+void putParticleRow(std::vector<std::byte>& out, const dem::ParticleStore& p, std::size_t i, bool withForce);
+/// Appends the rows in `in` (sent by rank `from`, each with force and torque if `withForce`, else
+/// with zero ones) to the store; returns how many. A size that is not a whole number of rows is a
+/// SimulationError naming the rank.
+std::size_t addParticleRows(std::span<const std::byte> in, dem::ParticleStore& p, int from, bool withForce);
 
 struct Halo
 {

@@ -35,14 +35,7 @@ bool applyFlow(dem::ParticleFlow& flow, dem::World& world, RankStep& ranks, Real
         {
             // The particles near the regions and the walls, as the inserters test them in one
             // process (a world of its own: its lists are not built, so the grid is made afresh).
-            dem::World probe;
-            probe.walls = world.walls;
-            probe.materials = world.materials;
-            probe.pairs = world.pairs;
-            probe.domain = world.domain;
-            probe.time = world.time;
-            probe.neighbors.skin = world.neighbors.skin;
-            probe.neighbors.reach = world.neighbors.reach;
+            dem::World probe = worldLike(world);
             probe.particles = std::move(near);
             flow.index = dem::ParticleIndex{};
             const std::size_t before = probe.particles.size();

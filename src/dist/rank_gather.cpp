@@ -16,41 +16,6 @@ namespace veridem::dist
 namespace
 {
 
-/// Bytes of one gathered row: id, material, fixed, position, velocity, angular velocity, force,
-/// torque, radius, mass, 1/mass, 1/inertia.
-constexpr std::size_t kGatherRowBytes = 4 + 4 + 1 + 15 * 8 + 4 * 8;
-
-void putRow(ByteWriter& w, const dem::ParticleStore& p, std::size_t i)
-{
-    w.put(p.id[i]);
-    w.put(p.material[i]);
-    w.put(p.fixed[i]);
-    w.put(p.position[i]);
-    w.put(p.velocity[i]);
-    w.put(p.angularVelocity[i]);
-    w.put(Vec3(p.force[i]));
-    w.put(Vec3(p.torque[i]));
-    for (const Real v : {p.radius[i], p.mass[i], p.invMass[i], p.invInertia[i]})
-        w.put(v);
-}
-
-void getRow(ByteReader& r, dem::ParticleStore& p)
-{
-    const auto id = r.get<std::uint32_t>();
-    const auto material = r.get<std::uint32_t>();
-    const auto fixed = r.get<std::uint8_t>();
-    const Vec3 x = r.vec3(), v = r.vec3(), w = r.vec3(), f = r.vec3(), t = r.vec3();
-    const Real radius = r.get<Real>();
-    const std::size_t k = p.add(x, v, w, radius, 1.0, material);
-    p.mass[k] = r.get<Real>();
-    p.invMass[k] = r.get<Real>();
-    p.invInertia[k] = r.get<Real>();
-    p.force[k] = f;
-    p.torque[k] = t;
-    p.id[k] = id;
-    p.fixed[k] = fixed;
-}
-
 /// Sets each wall slot's recorded load from the entries (matched by particle, wall and place in
 /// the slot group).
 void setWallLoads(dem::World& world, std::span<const KeyedHistory> sources)
@@ -95,17 +60,29 @@ void setWallLoads(dem::World& world, std::span<const KeyedHistory> sources)
 
 } // namespace
 
+dem::World worldLike(const dem::World& local)
+{
+    dem::World w;
+    w.walls = local.walls;
+    w.materials = local.materials;
+    w.pairs = local.pairs;
+    w.domain = local.domain;
+    w.time = local.time;
+    w.neighbors.skin = local.neighbors.skin;
+    w.neighbors.reach = local.neighbors.reach;
+    return w;
+}
+
 std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& ranks, int root)
 {
     const Collective& comm = ranks.comm();
     const std::size_t owned = ranks.owned();
     const dem::ParticleStore& p = local.particles;
     std::vector<std::byte> mine;
-    mine.reserve(owned * kGatherRowBytes);
-    ByteWriter w{mine};
+    mine.reserve(owned * kMigrantBytes);
     for (std::size_t i = 0; i < owned; ++i)
         if (!p.retired(i)) // (an outlet took it: out of the outputs, as in one process)
-            putRow(w, p, i);
+            putParticleRow(mine, p, i, true);
     KeyedHistory history;
     exportHistory(
         local, [&](std::uint32_t i) { return i < owned; }, history);
@@ -121,30 +98,17 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     if (comm.rank() != root)
         return std::nullopt;
 
-    dem::World whole;
-    whole.walls = local.walls;
-    whole.materials = local.materials;
-    whole.pairs = local.pairs;
-    whole.domain = local.domain;
+    dem::World whole = worldLike(local);
     whole.gravity = local.gravity;
-    whole.time = local.time;
     whole.stepCount = local.stepCount;
     whole.health = local.health;
-    whole.neighbors.skin = local.neighbors.skin;
-    whole.neighbors.reach = local.neighbors.reach;
     whole.pairHistory.keepRolling = local.pairHistory.keepRolling;
     whole.wallHistory.keepRolling = local.wallHistory.keepRolling;
     dem::ParticleStore gathered;
     std::vector<KeyedHistory> sources;
     for (int a = 0; a < size; ++a)
     {
-        if (rows[a].size() % kGatherRowBytes != 0)
-            throw SimulationError("MPI gather: " + std::to_string(rows[a].size()) +
-                                  " bytes of rows from rank " + std::to_string(a) +
-                                  ", not a whole number of rows");
-        ByteReader r{rows[a]};
-        while (!r.done())
-            getRow(r, gathered);
+        addParticleRows(rows[a], gathered, a, true);
         sources.push_back(unpackHistory(histories[a], a));
     }
     // By id, as one process holds them (the scene's order; inserted particles after).
@@ -164,43 +128,23 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     return whole;
 }
 
-namespace
-{
-dem::ParticleStore readRows(std::span<const std::byte> in, int from)
-{
-    if (in.size() % kGatherRowBytes != 0)
-        throw SimulationError("MPI exchange: " + std::to_string(in.size()) + " bytes of rows from rank " +
-                              std::to_string(from) + ", not a whole number of rows");
-    dem::ParticleStore rows;
-    ByteReader r{in};
-    while (!r.done())
-        getRow(r, rows);
-    return rows;
-}
-} // namespace
-
 dem::ParticleStore gatherParticlesIn(const dem::ParticleStore& local, std::size_t owned, const Vec3& lo,
                                      const Vec3& hi, const Collective& comm, int root)
 {
     Buffers out(static_cast<std::size_t>(comm.size()));
-    ByteWriter w{out[root]};
     for (std::size_t i = 0; i < owned; ++i)
     {
         const Vec3& x = local.position[i];
         if (!local.retired(i) && x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y && x.z >= lo.z &&
             x.z <= hi.z)
-            putRow(w, local, i);
+            putParticleRow(out[root], local, i, true);
     }
     const Buffers in = comm.exchange(std::move(out));
     dem::ParticleStore gathered;
     if (comm.rank() != root)
         return gathered;
     for (int a = 0; a < comm.size(); ++a)
-    {
-        const dem::ParticleStore rows = readRows(in[a], a);
-        for (std::size_t i = 0; i < rows.size(); ++i)
-            gathered.appendRow(rows, i);
-    }
+        addParticleRows(in[a], gathered, a, true);
     return gathered;
 }
 
@@ -209,13 +153,12 @@ dem::ParticleStore broadcastParticles(const dem::ParticleStore& rows, const Coll
     Buffers out(static_cast<std::size_t>(comm.size()));
     if (comm.rank() == root)
         for (int b = 0; b < comm.size(); ++b)
-        {
-            ByteWriter w{out[b]};
             for (std::size_t i = 0; i < rows.size(); ++i)
-                putRow(w, rows, i);
-        }
+                putParticleRow(out[b], rows, i, true);
     const Buffers in = comm.exchange(std::move(out));
-    return readRows(in[root], root);
+    dem::ParticleStore received;
+    addParticleRows(in[root], received, root, true);
+    return received;
 }
 
 } // namespace veridem::dist

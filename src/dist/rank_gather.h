@@ -14,6 +14,11 @@
 namespace veridem::dist
 {
 
+/// A world with no particles and `local`'s walls, materials, pair table, domain, time, skin and
+/// touch reach (the state every rank shares), for a world of other particles (the gathered
+/// world, the inserters' probe: dist/rank_flow.h).
+dem::World worldLike(const dem::World& local);
+
 /// On rank `root`: a world holding `local`'s state that every rank shares (walls, materials,
 /// pair table, time, step count, skin and reach, gravity), every rank's owned particles by id
 /// (rows whole, force and torque included), their contacts' history, and the wall loads (with
