@@ -9,6 +9,11 @@
 #include <string>
 #include <vector>
 
+namespace veridem::dist
+{
+class Collective;
+}
+
 namespace veridem::verify
 {
 
@@ -50,6 +55,9 @@ struct CaseContext
 {
     bool showProgress = false; // long cases print progress on stderr
     double dtScale = 1;        // every time step of the case is multiplied by this (dt sweeps)
+    /// Under `mpirun -np N veridem verify` (N > 1): the ranks, over which the cases labelled
+    /// "ranks" step their worlds (dem/case_stepper.h); null in one process.
+    const dist::Collective* ranks = nullptr;
 };
 
 /// An expected order of the dt error of the quantities whose name starts with `prefix`.
@@ -81,7 +89,7 @@ struct Case
     std::string name;                // unique, snake_case
     std::string summary;             // one line
     std::string reference;           // where the formula comes from
-    std::vector<std::string> labels; // "quick" (CI), "paper", "dem", "fdem", "slow" ...
+    std::vector<std::string> labels; // "quick" (CI), "paper", "dem", "fdem", "slow", "ranks" ...
     std::function<CaseResult(const CaseContext&)> run;
 };
 

@@ -1,6 +1,7 @@
 #include "runner.h"
 
 #include "core/error.h"
+#include "dist/collective.h"
 #include "exec/thread_pool.h"
 #include "sweep.h"
 
@@ -129,10 +130,32 @@ int runCases(const RunRequest& request)
                              "': " + failed.message());
     }
 
+    const bool onRanks = request.ranks && request.ranks->size() > 1;
+    const auto runsOnRanks = [](const Case& c)
+    { return std::find(c.labels.begin(), c.labels.end(), "ranks") != c.labels.end(); };
     std::vector<const Case*> chosen;
+    std::size_t leftOut = 0; // (on several ranks: the selected cases that run in one process only)
     for (const auto& c : registry())
         if (selected(c, request))
+        {
+            if (onRanks && !runsOnRanks(c))
+            {
+                if (!request.names.empty())
+                    throw InputError("verification case '" + c.name +
+                                     "' runs in one process only (it steps its world itself); under "
+                                     "mpirun the cases labelled 'ranks' run (`veridem verify --label ranks "
+                                     "--list` shows their labels)");
+                ++leftOut;
+                continue;
+            }
             chosen.push_back(&c);
+        }
+    if (onRanks && chosen.empty())
+        throw InputError("none of the selected verification cases runs on several ranks; the cases "
+                         "labelled 'ranks' do");
+    if (leftOut > 0)
+        std::printf("%zu of the selected cases run in one process only and are left out on %d ranks\n",
+                    leftOut, request.ranks->size());
     struct Outcome
     {
         const Case* c;
@@ -140,7 +163,8 @@ int runCases(const RunRequest& request)
         std::string error;
     };
     std::vector<Outcome> outcomes(chosen.size());
-    const CaseContext context{.showProgress = request.showProgress};
+    const CaseContext context{.showProgress = request.showProgress,
+                              .ranks = onRanks ? request.ranks : nullptr};
     const auto runOne = [&](std::size_t k)
     {
         Outcome o{chosen[k], {}, {}};
@@ -164,9 +188,11 @@ int runCases(const RunRequest& request)
 
     // Workers take the cases in registry order; this thread reports them in that order.
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    // On several ranks: none (the cases run on this thread, which alone makes MPI calls).
     const std::size_t jobs =
-        std::min<std::size_t>(request.jobs > 0 ? static_cast<std::size_t>(request.jobs) : cores,
-                              std::max<std::size_t>(chosen.size(), 1));
+        onRanks ? 0
+                : std::min<std::size_t>(request.jobs > 0 ? static_cast<std::size_t>(request.jobs) : cores,
+                                        std::max<std::size_t>(chosen.size(), 1));
     std::mutex mutex;
     std::condition_variable finished;
     std::vector<char> done(chosen.size(), 0);
@@ -209,6 +235,9 @@ int runCases(const RunRequest& request)
     std::fflush(stdout);
     for (std::size_t k = 0; k < chosen.size(); ++k)
     {
+        if (onRanks)
+            outcomes[k] = runOne(k);
+        else
         {
             std::unique_lock<std::mutex> lock(mutex);
             finished.wait(lock, [&] { return done[k] != 0; });

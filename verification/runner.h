@@ -19,14 +19,19 @@ struct RunRequest
     std::optional<std::string> seriesDir; // write <dir>/<case>/<series>.csv
     bool showProgress = true;
     int jobs = 0; // cases run at once, on threads of their own (0: one per core)
+    /// Under `mpirun -np N veridem verify` (N > 1): the ranks. Only the cases labelled "ranks"
+    /// run (a case named with `--case` that is not one is refused), one at a time on the calling
+    /// thread (the collectives of every rank in one order), their worlds stepped over the ranks
+    /// (dem/case_stepper.h); every rank computes the results, the caller prints them on one.
+    const dist::Collective* ranks = nullptr;
 };
 
 /// Prints the case list (name, labels, summary).
 void listCases();
 
-/// Runs the selected cases, `jobs` at a time, and reports them in registry order as each
-/// finishes (results do not depend on `jobs`: the cases share nothing, and a case's own loops give
-/// the same bits on any number of threads); returns the process exit code (0 when every case
+/// Runs the selected cases, `jobs` at a time (one at a time on several ranks), and reports them in
+/// registry order as each finishes (results do not depend on `jobs`: the cases share nothing, and a case's
+/// own loops give the same bits on any number of threads); returns the process exit code (0 when every case
 /// passed).
 int runCases(const RunRequest& request);
 

@@ -4,6 +4,7 @@
 //   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR] [--jobs N]
 #include "app/mpi_launch.h"
 #include "app/run_scene.h"
+#include "app/silenced_stream.h"
 #include "core/error.h"
 #include "exec/thread_pool.h"
 #include "io/toml_reader.h"
@@ -16,6 +17,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -152,9 +154,6 @@ int main(int argc, char** argv)
 
     try
     {
-        if (launch->size() > 1 && !run->parsed())
-            throw veridem::InputError("`veridem verify` runs in one process; under mpirun, use `veridem run "
-                                      "SCENE` (the MPI checks are in the test suite: ctest -L mpi)");
         if (run->parsed())
         {
             runOptions.ranks = launch->collective();
@@ -171,6 +170,22 @@ int main(int argc, char** argv)
             return 0;
         }
         checkLabels(verifyRequest.labels);
+        // Several ranks: the cases labelled "ranks" step over them, one case at a time; every rank
+        // computes the results, the first prints and writes them.
+        const bool root = launch->rank() == 0;
+        std::optional<veridem::app::SilencedStream> quietOthers;
+        if (launch->size() > 1)
+        {
+            verifyRequest.ranks = launch->collective();
+            veridem::exec::setThreads(threads);
+            if (!root)
+            {
+                quietOthers.emplace(stdout, true);
+                quiet = true;
+                jsonPath.clear();
+                reportDir.clear();
+            }
+        }
         verifyRequest.showProgress = !quiet;
         if (!jsonPath.empty())
             verifyRequest.jsonPath = jsonPath;

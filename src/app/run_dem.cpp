@@ -1,8 +1,8 @@
 // `veridem run` for 3D DEM scenes: read, check the time step (or restore a checkpoint), step with
 // output and checkpoints between steps, stop cleanly on a blow-up (keeping the output written so
 // far) or on SIGINT/SIGTERM (with a checkpoint), print a summary.
-#include "app/quiet_stderr.h"
 #include "app/run_scene.h"
+#include "app/silenced_stream.h"
 #include "core/error.h"
 #include "dem/time_step.h"
 #include "dist/rank_flow.h"
@@ -151,7 +151,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     const bool root = !severalRanks || options.ranks->rank() == 0; // prints and writes the files
     io::DemScene scene = [&]
     {
-        const QuietStderr quiet(!root); // (every rank reads the scene; the first prints its warnings)
+        const SilencedStream quiet(stderr,
+                                   !root); // (every rank reads the scene; the first prints its warnings)
         return io::readDemScene(table, options.sceneFile);
     }();
     dem::World& world = scene.world;

@@ -54,7 +54,8 @@ bool applyFlow(dem::ParticleFlow& flow, dem::World& world, RankStep& ranks, Real
     return true;
 }
 
-std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, const Collective& comm)
+std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, const Collective& comm,
+                                      bool everyRank)
 {
     std::vector<dem::Outlet> totals = outlets;
     std::vector<std::uint64_t> counts(outlets.size());
@@ -65,8 +66,11 @@ std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, c
     ByteWriter w{out[0]};
     for (const dem::Outlet& o : outlets)
         w.put(o.mass);
+    if (everyRank)
+        for (std::size_t b = 1; b < out.size(); ++b)
+            out[b] = out[0];
     const Buffers in = comm.exchange(std::move(out));
-    if (comm.rank() != 0)
+    if (!everyRank && comm.rank() != 0)
         return totals;
     for (std::size_t k = 0; k < outlets.size(); ++k)
     {

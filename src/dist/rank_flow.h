@@ -26,8 +26,9 @@ namespace veridem::dist
 /// rank. Collective.
 bool applyFlow(dem::ParticleFlow& flow, dem::World& world, RankStep& ranks, Real dt);
 
-/// The outlets with their counts and masses summed over the ranks, on rank 0 (masses added in
-/// rank order); elsewhere this rank's own. Collective.
-std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, const Collective& comm);
+/// The outlets with their counts and masses summed over the ranks (masses added in rank order), on
+/// rank 0, or on every rank with `everyRank`; elsewhere this rank's own. Collective.
+std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, const Collective& comm,
+                                      bool everyRank = false);
 
 } // namespace veridem::dist

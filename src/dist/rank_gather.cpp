@@ -5,6 +5,7 @@
 #include "dist/rank_history.h"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 #include <span>
 #include <string>
@@ -78,24 +79,28 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     const Collective& comm = ranks.comm();
     const std::size_t owned = ranks.owned();
     const dem::ParticleStore& p = local.particles;
-    std::vector<std::byte> mine;
+    // One message a rank: the length of the rows [B], the rows, then the history.
+    std::vector<std::byte> mine(sizeof(std::uint64_t));
     mine.reserve(owned * kMigrantBytes);
     for (std::size_t i = 0; i < owned; ++i)
         if (!p.retired(i)) // (an outlet took it: out of the outputs, as in one process)
             putParticleRow(mine, p, i, true);
+    const std::uint64_t rowBytes = mine.size() - sizeof(std::uint64_t);
+    std::memcpy(mine.data(), &rowBytes, sizeof rowBytes);
     KeyedHistory history;
     exportHistory(
         local, [&](std::uint32_t i) { return i < owned; }, history);
-    std::vector<std::byte> historyBytes;
-    packHistory(history, historyBytes);
+    packHistory(history, mine);
 
     const int size = comm.size();
-    Buffers rows(static_cast<std::size_t>(size)), histories(static_cast<std::size_t>(size));
-    rows[root] = std::move(mine);
-    histories[root] = std::move(historyBytes);
-    rows = comm.exchange(std::move(rows));
-    histories = comm.exchange(std::move(histories));
-    if (comm.rank() != root)
+    Buffers messages(static_cast<std::size_t>(size));
+    if (root == kEveryRank)
+        for (int b = 0; b < size; ++b)
+            messages[b] = mine;
+    else
+        messages[root] = std::move(mine);
+    messages = comm.exchange(std::move(messages));
+    if (root != kEveryRank && comm.rank() != root)
         return std::nullopt;
 
     dem::World whole = worldLike(local);
@@ -108,8 +113,15 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     std::vector<KeyedHistory> sources;
     for (int a = 0; a < size; ++a)
     {
-        addParticleRows(rows[a], gathered, a, true);
-        sources.push_back(unpackHistory(histories[a], a));
+        const std::span<const std::byte> message = messages[a];
+        ByteReader r{message};
+        const auto rowsOf = r.get<std::uint64_t>(); // [B]
+        if (rowsOf > message.size() - r.at)
+            throw SimulationError("MPI exchange: the gather's message from rank " + std::to_string(a) +
+                                  " has " + std::to_string(message.size()) + " bytes, its rows " +
+                                  std::to_string(rowsOf));
+        addParticleRows(message.subspan(r.at, rowsOf), gathered, a, true);
+        sources.push_back(unpackHistory(message.subspan(r.at + rowsOf), a));
     }
     // By id, as one process holds them (the scene's order; inserted particles after).
     std::vector<std::uint32_t> order(gathered.size());

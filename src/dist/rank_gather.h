@@ -19,11 +19,14 @@ namespace veridem::dist
 /// world, the inserters' probe: dist/rank_flow.h).
 dem::World worldLike(const dem::World& local);
 
-/// On rank `root`: a world holding `local`'s state that every rank shares (walls, materials,
-/// pair table, time, step count, skin and reach, gravity), every rank's owned particles by id
-/// (rows whole, force and torque included), their contacts' history, and the wall loads (with
-/// recordLoads); lists rebuilt, not distributed (world.ranks null). Elsewhere: nullopt.
-/// Collective. O(N) on the root.
+/// `root` for a gather whose result every rank gets.
+inline constexpr int kEveryRank = -1;
+
+/// On rank `root` (every rank with kEveryRank): a world holding `local`'s state that every rank
+/// shares (walls, materials, pair table, time, step count, skin and reach, gravity), every rank's
+/// owned particles by id (rows whole, force and torque included), their contacts' history, and
+/// the wall loads (with recordLoads); lists rebuilt, not distributed (world.ranks null).
+/// Elsewhere: nullopt. Collective. O(N) on each receiving rank.
 std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& ranks, int root = 0);
 
 /// On rank `root`: the owned particles of every rank whose centre lies in the box [lo, hi] [m]

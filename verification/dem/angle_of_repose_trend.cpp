@@ -310,6 +310,6 @@ VERIDEM_CASE(
      .summary = "piles poured in a slot onto frozen spheres: angle of repose rises with rolling and "
                 "sliding friction, within 20-40 deg",
      .reference = "Zhou et al. 1999 (Physica A 269:536), 2001 (PRE 64:021301), 2002 (Powder Technol. 125:45)",
-     .labels = {"dem", "bulk"},
+     .labels = {"dem", "bulk", "ranks"},
      .run = run});
 } // namespace veridem::verify

@@ -98,7 +98,7 @@ CaseResult run(const CaseContext& context)
 VERIDEM_CASE({.name = "asmar_energy_100_collisions",
               .summary = "100 elastic collisions at 50 steps per contact: |dE|/E < 1e-4, bounded, no drift",
               .reference = "BENCHMARKS 5.5",
-              .labels = {"dem", "quick", "asmar"},
+              .labels = {"dem", "quick", "asmar", "ranks"},
               .run = run});
 VERIDEM_SWEEP("asmar_energy_100_collisions",
               {.orders = {

@@ -66,7 +66,7 @@ CaseResult run(const CaseContext& context)
 VERIDEM_CASE({.name = "asmar_newton_cradle",
               .summary = "Newton's cradle with gaps: one ball leaves at v0, momentum and energy conserved",
               .reference = "BENCHMARKS 5.6; Herrmann & Seitz 1982",
-              .labels = {"dem", "quick", "asmar"},
+              .labels = {"dem", "quick", "asmar", "ranks"},
               .run = run});
 VERIDEM_SWEEP("asmar_newton_cradle", {});
 } // namespace veridem::verify

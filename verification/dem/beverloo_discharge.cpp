@@ -431,6 +431,6 @@ VERIDEM_CASE(
      .summary = "flat-bottomed silo filled three times, four orifices each: rate independent of the head, "
                 "Beverloo's C and k (weighted fit to the mean rates) in 0.55-0.65 and 1-3, C to +- 0.02",
      .reference = "Beverloo, Leniger & van de Velde 1961; Nedderman 1992, ch. 10",
-     .labels = {"dem", "bulk"},
+     .labels = {"dem", "bulk", "ranks"},
      .run = run});
 } // namespace veridem::verify

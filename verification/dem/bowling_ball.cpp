@@ -75,7 +75,7 @@ CaseResult run(const CaseContext& context)
 VERIDEM_CASE({.name = "bowling_ball",
               .summary = "sliding-to-rolling transition: v_f = 5/7 v0 at t* = 2 v0/(7 mu g)",
               .reference = "BENCHMARKS 5 #2 and 7 #9",
-              .labels = {"dem", "quick"},
+              .labels = {"dem", "quick", "ranks"},
               .run = run});
 VERIDEM_SWEEP("bowling_ball", {.orders = {{"t*", 1.0,
                                            "the end of sliding is resolved by the tangential spring, whose "

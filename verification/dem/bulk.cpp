@@ -1,7 +1,7 @@
 #include "bulk.h"
 
+#include "case_stepper.h"
 #include "core/error.h"
-#include "dem/particle_changes.h"
 #include "dem/time_step.h"
 #include "io/particle_flow_keys.h"
 #include "io/toml_reader.h"
@@ -34,8 +34,7 @@ void runScene(io::DemScene& scene, Real duration, Real sampleInterval, const Cas
               const std::string& label, const std::function<void(const World&)>& sample)
 {
     World& world = scene.world;
-    if (!world.prepared)
-        dem::prepare(world);
+    CaseStepper stepper(world, context, &scene.flow);
     const Real dt = scene.dt * context.dtScale;
     const auto steps = static_cast<std::uint64_t>(std::llround(duration / dt));
     const std::uint64_t sampleEvery =
@@ -52,22 +51,18 @@ void runScene(io::DemScene& scene, Real duration, Real sampleInterval, const Cas
             end = std::min(end, (s / flowEvery + 1) * flowEvery);
         if (sampleEvery)
             end = std::min(end, first + ((s - first) / sampleEvery + 1) * sampleEvery);
-        const std::uint64_t done = dem::advance(world, dt, end - s, scene.maxOverlapFraction);
+        const std::uint64_t done = stepper.advance(dt, end - s, scene.maxOverlapFraction);
         if (done < end - s || !world.health.finite || world.health.maxOverlapRatio > scene.maxOverlapFraction)
             throw SimulationError(
                 label + ": step " + std::to_string(world.stepCount) + ", particle " +
-                std::to_string(world.health.finite ? world.health.worstParticle
-                                                   : world.health.firstNonFinite) +
+                std::to_string(stepper.failedParticleId()) +
                 (world.health.finite
                      ? ": overlap " + std::to_string(world.health.maxOverlapRatio) + " of the radius"
                      : ": state is not finite"));
         if (flowEvery && world.stepCount % flowEvery == 0)
-            scene.flow.apply(world, dt);
+            stepper.applyFlow(dt);
         if (sampleEvery && (world.stepCount - first) % sampleEvery == 0 && sample)
-        {
-            dem::compactRetiredParticles(world); // (a sampler reads the particles by slot)
-            sample(world);
-        }
+            stepper.sample(sample);
         if (context.showProgress)
         {
             const auto now = std::chrono::steady_clock::now();
@@ -82,7 +77,7 @@ void runScene(io::DemScene& scene, Real duration, Real sampleInterval, const Cas
     }
     if (context.showProgress && lastReport != start)
         std::fprintf(stderr, "\r%*s\r", 70, "");
-    dem::compactRetiredParticles(world); // (the caller reads the particles)
+    stepper.finish(); // (the caller reads the whole world)
 }
 
 Real topOfParticles(const World& world)

@@ -413,6 +413,6 @@ VERIDEM_CASE({.name = "chute_flow_bagnold",
               .summary = "periodic chute (Silbert 2001) at 24-26 deg: steady Bagnold profile u ~ h^1.5 - "
                          "(h-z)^1.5, depth-independent packing; stops at 17 deg",
               .reference = "Silbert et al., Phys. Rev. E 64, 051302 (2001)",
-              .labels = {"dem", "bulk"},
+              .labels = {"dem", "bulk", "ranks"},
               .run = run});
 } // namespace veridem::verify

@@ -178,6 +178,6 @@ VERIDEM_CASE({.name = "drum_cylinder_vs_mesh",
               .summary = "rotating drum as an analytic cylinder and as its STL twin: angle of repose within "
                          "1 deg, equal steady drive torque = the bed's gravity moment",
               .reference = "examples/rotating_drum*.toml; moment balance of a steady bed",
-              .labels = {"dem", "mesh"},
+              .labels = {"dem", "mesh", "ranks"},
               .run = run});
 } // namespace veridem::verify

@@ -239,6 +239,6 @@ VERIDEM_CASE(
      .summary = "base load of a cylinder filled in stages saturates as Janssen's law, K fitted in "
                 "0.3-0.6",
      .reference = "Janssen 1895; Nedderman 1992 (Statics and kinematics of granular materials), ch. 3",
-     .labels = {"dem", "bulk"},
+     .labels = {"dem", "bulk", "ranks"},
      .run = run});
 } // namespace veridem::verify

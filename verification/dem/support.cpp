@@ -1,5 +1,6 @@
 #include "support.h"
 
+#include "case_stepper.h"
 #include "core/error.h"
 
 #include <algorithm>
@@ -11,8 +12,7 @@ namespace veridem::verify
 void runFor(World& world, Real duration, Real dt, const CaseContext& context, const std::string& label,
             const std::function<void(const World&)>& observe)
 {
-    if (!world.prepared)
-        dem::prepare(world);
+    CaseStepper stepper(world, context);
     dt *= context.dtScale; // a dt sweep (sweep.h) runs the case at dt/2 and dt/4 too
     const auto steps = static_cast<std::uint64_t>(std::llround(duration / dt));
     const auto start = std::chrono::steady_clock::now();
@@ -23,16 +23,13 @@ void runFor(World& world, Real duration, Real dt, const CaseContext& context, co
     constexpr std::uint64_t kProgressEvery = 0x10000; // steps
     for (std::uint64_t s = 0; s < steps;)
     {
-        if (observe)
-            dem::step(world, dt);
-        else
-            dem::advance(world, dt, std::min(kProgressEvery - s % kProgressEvery, steps - s));
+        stepper.advance(dt, observe ? 1 : std::min(kProgressEvery - s % kProgressEvery, steps - s));
         s = world.stepCount - firstStep;
         if (!world.health.finite)
             throw SimulationError(label + ": step " + std::to_string(world.stepCount) + ", particle " +
-                                  std::to_string(world.health.firstNonFinite) + ": state is not finite");
+                                  std::to_string(stepper.failedParticleId()) + ": state is not finite");
         if (observe)
-            observe(world);
+            stepper.sample(observe);
         if (context.showProgress && s % kProgressEvery == 0)
         {
             const auto now = std::chrono::steady_clock::now();
@@ -49,6 +46,7 @@ void runFor(World& world, Real duration, Real dt, const CaseContext& context, co
     }
     if (context.showProgress && std::chrono::duration<double>(lastReport - start).count() > 0)
         std::fprintf(stderr, "\r%*s\r", 70, "");
+    stepper.finish();
 }
 
 Real fitSlope(const std::vector<Real>& x, const std::vector<Real>& y)

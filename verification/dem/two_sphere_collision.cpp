@@ -108,7 +108,7 @@ CaseResult run(const CaseContext& context)
 VERIDEM_CASE({.name = "two_sphere_collision",
               .summary = "oblique collision of unequal spinning spheres: momentum, angular momentum, e",
               .reference = "BENCHMARKS 3 test 4 and 5 #5",
-              .labels = {"dem", "quick"},
+              .labels = {"dem", "quick", "ranks"},
               .run = run});
 VERIDEM_SWEEP(
     "two_sphere_collision",

@@ -1,0 +1,28 @@
+# tests/dist/CMakeLists.txt: mpi_verify_cases. `veridem verify` of the cases CASES (a ;-list) in one
+# process and under mpirun on each count in RANKS, compared by compare_verify.py (-DLIMIT: largest
+# relative difference of a measured value; 0: the same bits). -DVERIDEM, -DMPIEXEC, -DCOMPARE, -DWORK.
+file(REMOVE_RECURSE ${WORK})
+set(selection)
+foreach(name ${CASES})
+  list(APPEND selection --case ${name})
+endforeach()
+set(results)
+foreach(ranks 1 ${RANKS})
+  if(ranks EQUAL 1)
+    set(command ${VERIDEM})
+  else()
+    set(command ${MPIEXEC} -np ${ranks} ${VERIDEM})
+  endif()
+  execute_process(COMMAND ${command} verify ${selection} --quiet --json ${WORK}/np${ranks}.json
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${ranks} rank(s): exit ${rc}\n${out}\n${err}")
+  endif()
+  list(APPEND results ${WORK}/np${ranks}.json)
+endforeach()
+execute_process(COMMAND python3 ${COMPARE} ${results} --max-relative ${LIMIT} RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out)
+message(STATUS "${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the results differ between rank counts")
+endif()
