@@ -8,6 +8,7 @@
 #include "dist/rank_flow.h"
 #include "dist/rank_gather.h"
 #include "dist/rank_step.h"
+#include "dist/rank_sums.h"
 #include "exec/thread_pool.h"
 #include "io/contact_output.h"
 #include "io/dem_checkpoint.h"
@@ -139,8 +140,6 @@ void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
     };
     if (scene.world.domain.periodic[0] && scene.world.domain.periodic[1] && scene.world.domain.periodic[2])
         refuse("a domain periodic along all three axes (the regions are cut across non-periodic axes only)");
-    if (scene.measurements.energy)
-        refuse("[output] energy = true (the energy ledger)");
 }
 
 } // namespace
@@ -173,6 +172,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     std::optional<std::uint64_t> thermoBytes, regionBytes, wallBytes;
     const io::MeasurementOptions& measure = scene.measurements;
     dem::EnergyLedger ledger; // with `[output] energy = true`: world.observer
+    // On several ranks each books its share (energy_ledger.h); the files get their sum.
+    dem::EnergyLedger ledgerTotals;
     dem::EnergyLedgerState* const ledgerState = measure.energy ? &ledger.state : nullptr;
     // particles.csv, thermo.csv, region.csv (if measured), walls.csv (if there are walls),
     // outlets.csv (if there are outlets), in this order in the checkpoint
@@ -221,12 +222,15 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         rankStep->distribute(world);
         if (!resume && !flow.empty())
             dist::applyFlow(flow, world, *rankStep, scene.dt); // (step 0 is a flow step)
-        if (resume && !root) // (the checkpoint's outlet totals are counted once, by the first rank)
+        if (resume && !root) // (the checkpoint's totals are counted once, by the first rank)
+        {
             for (dem::Outlet& o : flow.outlets)
             {
                 o.count = 0;
                 o.mass = 0;
             }
+            dem::forEachAmount(ledger.state, [](Real& a) { a = 0; });
+        }
     }
     world.wallContacts.setRecordLoads(wallLoads);
     if (options.stopAtStep && *options.stopAtStep <= world.stepCount)
@@ -249,7 +253,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     if (root)
     {
         recorder.emplace(options.outDir, scene.writeVtk, scene.vtkFormat, resume ? &*resume : nullptr);
-        thermo.emplace(options.outDir, thermoBytes, measure.energy ? &ledger : nullptr);
+        thermo.emplace(options.outDir, thermoBytes,
+                       measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
         if (measure.contacts)
             contacts.emplace(options.outDir, scene.vtkFormat,
                              resume ? resume->frameTimes : std::vector<double>{});
@@ -266,10 +271,17 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     // The outlets' totals: this process's, or on several ranks their sum (on the first). Collective.
     const auto outletState = [&]
     { return rankStep ? dist::outletTotals(flow.outlets, *options.ranks) : flow.outlets; };
+    // The ledger's amounts summed over the ranks, on the first (collective).
+    const auto sumLedger = [&]
+    {
+        if (rankStep && measure.energy)
+            ledgerTotals.state = dist::ledgerTotals(ledger.state, *options.ranks);
+    };
     const auto recordOutputs = [&]
     {
         const std::vector<dem::Outlet> outletTotals =
             outletRecorder || rankStep ? outletState() : flow.outlets;
+        sumLedger();
         std::optional<dem::World> gathered;
         if (rankStep && !(gathered = wholeWorld()))
             return;
@@ -312,6 +324,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     {
         dem::ParticleFlow saved = flow; // (on several ranks, with the outlets' totals)
         saved.outlets = outletState();
+        sumLedger();
         std::optional<dem::World> gathered;
         if (rankStep && !(gathered = wholeWorld()))
             return;
@@ -323,7 +336,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (outletRecorder)
             bytes.push_back(outletRecorder->size());
         io::writeDemCheckpoint(checkpointPath, gathered ? *gathered : world, sceneHash,
-                               {recorder->frameTimes(), bytes, 0}, ledgerState, &saved);
+                               {recorder->frameTimes(), bytes, 0},
+                               ledgerState && rankStep ? &ledgerTotals.state : ledgerState, &saved);
     };
     io::stopOnSignals();
 

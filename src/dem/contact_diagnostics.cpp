@@ -74,6 +74,10 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
     std::vector<ContactRecord> records;
     const ParticleStore& p = world.particles;
     const NeighborList& list = world.neighbors;
+    // On an MPI rank (world.ranks) only the contacts it books, so that each is booked once over the
+    // ranks: a pair whose particle of lower id is its own, a wall contact of its own particle.
+    const std::size_t own = world.ranks ? world.ranks->ownedParticles() : p.size();
+    const auto books = [&](std::uint32_t i, std::uint32_t j) { return (p.id[i] < p.id[j] ? i : j) < own; };
     // Pairs: the contact frame of the force stage (pairContactFrame, contact_frame.h), within the
     // touch criterion's reach as the force stage passes them to the law; recorded while formed
     // (JKR: the law's formed flag; every other model: delta > 0). `separation`: x_i - x_j, or x_i
@@ -82,6 +86,8 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
     const auto pairContact = [&](std::uint32_t i, std::uint32_t j, const Vec3& separation, Real effectiveMass,
                                  const auto& historyOf)
     {
+        if (!books(i, j))
+            return;
         const Real ri = p.radius[i], rj = p.radius[j];
         const PairParams& params = world.pairs(p.material[i], p.material[j]);
         const bool jkr = params.normalModel == NormalModel::Jkr;
@@ -141,7 +147,7 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
             const std::uint32_t i = list.activeFirst[a], j = list.activeSecond[a];
             const PairParams& params = world.pairs(p.material[i], p.material[j]);
             const Real touching = p.radius[i] + p.radius[j] + list.reach;
-            if (world.pairHistory.formed[a] && params.normalModel == NormalModel::Jkr &&
+            if (world.pairHistory.formed[a] && params.normalModel == NormalModel::Jkr && books(i, j) &&
                 lengthSquared(p.position[i] - p.position[j]) >= touching * touching)
                 *brokenEnergy += jkrBreakingEnergy(params.effectiveModulus,
                                                    p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]),
@@ -154,6 +160,8 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
     for (std::size_t k = 0; k < walls.size(); ++k)
     {
         const std::uint32_t i = walls.particle[k];
+        if (i >= own)
+            continue;
         const Wall& wall = world.walls[walls.wall[k]];
         const Real r = p.radius[i];
         const WallGap gap = std::holds_alternative<MeshShape>(wall.shape)

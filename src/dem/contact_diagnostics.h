@@ -51,7 +51,8 @@ struct ContactRecord
 /// (step()'s observer point, or between steps). A JKR pair is a contact while the law keeps it
 /// formed (also at delta_c < delta <= 0). If `brokenEnergy` is given, the energy that the formed
 /// JKR contacts breaking in this step lose, jkrBreakingEnergy each (models/cohesion.h), is added
-/// to it [J].
+/// to it [J]. On an MPI rank (world.ranks): the contacts it books, each contact booked by one rank
+/// (a pair by the owner of its particle of lower id, a wall contact by its particle's owner).
 std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* brokenEnergy = nullptr);
 
 /// The energy stored in the normal spring of a formed pair at overlap delta [m] [J]: the integral

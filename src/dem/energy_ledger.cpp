@@ -3,7 +3,13 @@
 namespace veridem::dem
 {
 
-LedgerPowers ledgerPowers(const World& world, const std::vector<ContactRecord>& records)
+std::size_t bookedParticles(const World& world)
+{
+    return world.ranks ? world.ranks->ownedParticles() : world.particles.size();
+}
+
+LedgerPowers ledgerPowers(const World& world, const std::vector<ContactRecord>& records,
+                          const std::vector<Vec3>& velocity, const std::vector<Vec3>& angularVelocity)
 {
     const ParticleStore& p = world.particles;
     LedgerPowers power;
@@ -16,18 +22,17 @@ LedgerPowers ledgerPowers(const World& world, const std::vector<ContactRecord>& 
             const Wall& wall = world.walls[c.partner];
             const Vec3 wallVelocity = wallSurfaceVelocity(wall, c.point);
             relativeVelocity =
-                p.velocity[i] + cross(p.angularVelocity[i], c.point - p.position[i]) - wallVelocity;
-            relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
+                velocity[i] + cross(angularVelocity[i], c.point - p.position[i]) - wallVelocity;
+            relativeAngularVelocity = angularVelocity[i] - wall.motion.angularVelocity;
             power.wall += dot(c.normalForce + c.tangentialForce, wallVelocity) +
                           dot(c.rollingTorque, wall.motion.angularVelocity);
         }
         else
         {
             const std::uint32_t j = c.partner;
-            relativeVelocity =
-                p.velocity[i] - p.velocity[j] -
-                cross(c.leverI * p.angularVelocity[i] + c.leverJ * p.angularVelocity[j], c.normal);
-            relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
+            relativeVelocity = velocity[i] - velocity[j] -
+                               cross(c.leverI * angularVelocity[i] + c.leverJ * angularVelocity[j], c.normal);
+            relativeAngularVelocity = angularVelocity[i] - angularVelocity[j];
         }
         power.normalDamping -= dot(c.normalDamping, relativeVelocity);
         power.tangentialDamping -= dot(c.tangentialDamping, relativeVelocity);
@@ -49,10 +54,11 @@ void EnergyLedger::start(const World& world)
         state.tangentialSpringEnergy += c.tangentialEnergyBefore;
         state.rollingSpringEnergy += c.rollingEnergyBefore;
     }
-    const LedgerPowers power = ledgerPowers(world, records);
+    const LedgerPowers power =
+        ledgerPowers(world, records, world.particles.velocity, world.particles.angularVelocity);
     state.started = true;
     state.elasticEnergy = elastic;
-    state.initialEnergy = kineticEnergy(world) + elastic;
+    state.initialEnergy = kineticEnergy(world, bookedParticles(world)) + elastic;
     state.wallPower = power.wall;
     state.normalDampingPower = power.normalDamping;
     state.tangentialDampingPower = power.tangentialDamping;
@@ -64,7 +70,7 @@ void EnergyLedger::beforeForces(const World& world, Real dt)
     // Gravity: m g . dx with dx = dt v(t+dt/2), the drift just done (exact: the potential).
     const ParticleStore& p = world.particles;
     Real gravityPower = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t i = 0; i < bookedParticles(world); ++i)
         gravityPower += p.mass[i] * dot(world.gravity, p.velocity[i]);
     state.gravityWork += dt * gravityPower;
     records_ = evaluateContacts(world, dt, &state.adhesion);
@@ -85,7 +91,11 @@ void EnergyLedger::beforeForces(const World& world, Real dt)
 void EnergyLedger::afterStep(const World& world, Real dt)
 {
     // The powers of this step's forces at v(t+dt), trapezoids with the last step's.
-    const LedgerPowers power = ledgerPowers(world, records_);
+    const ParticleStore& p = world.particles;
+    if (world.ranks) // (a ghost's own velocity is not its owner's v(t+dt))
+        world.ranks->velocitiesAfterStep(world, velocity_, angularVelocity_);
+    const LedgerPowers power = world.ranks ? ledgerPowers(world, records_, velocity_, angularVelocity_)
+                                           : ledgerPowers(world, records_, p.velocity, p.angularVelocity);
     const Real half = 0.5 * dt;
     state.wallWork += half * (state.wallPower + power.wall);
     state.normalDamping += half * (state.normalDampingPower + power.normalDamping);

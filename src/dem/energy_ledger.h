@@ -6,6 +6,10 @@
 //       + D_adhesion
 // equals E_initial up to the integrator's O(dt^2) error. It observes every step (StepObserver):
 // a scalar pass over the contacts per step, on request only.
+// On MPI ranks each rank's ledger books its share (its own particles' gravity work and kinetic
+// energy, the contacts evaluateContacts gives it: each contact on one rank). Every amount is a sum
+// over particles or contacts, so the ranks' states add up to the whole run's (forEachAmount;
+// dist/rank_sums.h), however the particles move between ranks.
 #pragma once
 
 #include "dem/contact_diagnostics.h"
@@ -38,12 +42,30 @@ struct EnergyLedgerState
     Real wallPower = 0, normalDampingPower = 0, tangentialDampingPower = 0, rollingPower = 0;
 };
 
-/// The powers of a set of contacts at the world's current velocities [W] (docs/measurements.md).
+static_assert(sizeof(EnergyLedgerState) == 16 * sizeof(Real), "forEachAmount lists every amount");
+
+/// Calls f(amount) for every amount of the state (all but `started`): each is a sum over particles
+/// or contacts.
+template <class State, class F> void forEachAmount(State& s, F f)
+{
+    for (auto* amount : {&s.initialEnergy, &s.elasticEnergy, &s.gravityWork, &s.wallWork, &s.normalDamping,
+                         &s.tangentialDamping, &s.friction, &s.rolling, &s.adhesion,
+                         &s.tangentialSpringEnergy, &s.rollingSpringEnergy, &s.wallPower,
+                         &s.normalDampingPower, &s.tangentialDampingPower, &s.rollingPower})
+        f(*amount);
+}
+
+/// The particles a ledger books: the store's first bookedParticles() (on an MPI rank its own).
+std::size_t bookedParticles(const World& world);
+
+/// The powers of a set of contacts at the velocities `velocity`, `angularVelocity` [m/s, rad/s]
+/// (the store's, or on an MPI rank RankExchange::velocitiesAfterStep's) [W] (docs/measurements.md).
 struct LedgerPowers
 {
     Real wall = 0, normalDamping = 0, tangentialDamping = 0, rolling = 0;
 };
-LedgerPowers ledgerPowers(const World& world, const std::vector<ContactRecord>& records);
+LedgerPowers ledgerPowers(const World& world, const std::vector<ContactRecord>& records,
+                          const std::vector<Vec3>& velocity, const std::vector<Vec3>& angularVelocity);
 
 class EnergyLedger final : public StepObserver
 {
@@ -62,7 +84,8 @@ class EnergyLedger final : public StepObserver
     Real dissipated() const;
 
   private:
-    std::vector<ContactRecord> records_; // this step's contacts (beforeForces to afterStep)
+    std::vector<ContactRecord> records_;           // this step's contacts (beforeForces to afterStep)
+    std::vector<Vec3> velocity_, angularVelocity_; // on an MPI rank: afterStep's, ghosts' from their owners
 };
 
 } // namespace veridem::dem

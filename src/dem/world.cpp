@@ -518,11 +518,11 @@ Real rotationalKineticEnergy(const ParticleStore& p, std::size_t i)
 }
 } // namespace
 
-Real kineticEnergy(const World& world)
+Real kineticEnergy(const World& world, std::size_t count)
 {
     const ParticleStore& p = world.particles;
     Real energy = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t i = 0; i < std::min(count, p.size()); ++i)
         energy += translationalKineticEnergy(p, i) + rotationalKineticEnergy(p, i);
     return energy;
 }

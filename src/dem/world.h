@@ -134,6 +134,13 @@ class RankExchange
     /// After the step: `health` becomes the health of all ranks' particles (the largest overlap,
     /// finite everywhere), so that every rank stops at the same step.
     virtual void combineHealth(World& world) = 0;
+    /// The store's first ownedParticles() are this rank's own; the rest are ghosts.
+    virtual std::size_t ownedParticles() const = 0;
+    /// For an observer after the step (the energy ledger): copies of the store's velocities and
+    /// angular velocities [m/s, rad/s] whose ghosts hold their owners' v(t+dt), w(t+dt) (a ghost's
+    /// own are not kicked with its whole force; the world is left as it is). Collective.
+    virtual void velocitiesAfterStep(const World& world, std::vector<Vec3>& velocity,
+                                     std::vector<Vec3>& angularVelocity) = 0;
 };
 
 /// Sees every step (an energy ledger, energy_ledger.h): beforeForces in the step's state after
@@ -239,8 +246,9 @@ void step(World& world, Real dt);
 std::uint64_t advance(World& world, Real dt, std::uint64_t steps,
                       Real maxOverlapRatio = std::numeric_limits<Real>::infinity());
 
-/// Kinetic energy, translational + rotational [J].
-Real kineticEnergy(const World& world);
+/// Kinetic energy, translational + rotational [J], of the store's first `count` particles (all by
+/// default; on an MPI rank, ownedParticles(): its own).
+Real kineticEnergy(const World& world, std::size_t count = std::numeric_limits<std::size_t>::max());
 
 /// The two parts of the kinetic energy, each summed over the particles in index order [J].
 struct KineticEnergyParts

@@ -202,7 +202,8 @@ Halo splitWholeStore(dem::ParticleStore& p, const Decomposition& d, Real halo, i
     return h;
 }
 
-void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
+void ghostMotion(const dem::ParticleStore& p, const Halo& h, const Collective& comm, Vec3* position,
+                 Vec3* velocity, Vec3* angularVelocity)
 {
     const int ranks = comm.size();
     Buffers out(ranks);
@@ -230,12 +231,22 @@ void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
         for (std::size_t k = 0; k < h.ghostCount[a]; ++k)
         {
             const std::size_t g = h.ghostFirst[a] + k;
-            p.position[g] = r.vec3();
-            p.velocity[g] = r.vec3();
-            p.angularVelocity[g] = r.vec3();
-            p.positionRadius[g] = p.positionRadiusRow(g);
+            const Vec3 x = r.vec3();
+            if (position)
+                position[g] = x;
+            velocity[g] = r.vec3();
+            angularVelocity[g] = r.vec3();
         }
     }
+}
+
+void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm)
+{
+    ghostMotion(p, h, comm, p.position.data(), p.velocity.data(), p.angularVelocity.data());
+    for (int a = 0; a < comm.size(); ++a)
+        if (a != comm.rank())
+            for (std::size_t g = h.ghostFirst[a]; g < h.ghostFirst[a] + h.ghostCount[a]; ++g)
+                p.positionRadius[g] = p.positionRadiusRow(g);
 }
 
 void returnGhostForces(dem::ParticleStore& p, const Halo& h, const Collective& comm)

@@ -88,6 +88,12 @@ Halo splitWholeStore(dem::ParticleStore& p, const Decomposition& d, Real halo, i
 /// Copies each ghost's position, velocity and angular velocity from its owner. Collective.
 void refreshGhosts(dem::ParticleStore& p, const Halo& h, const Collective& comm);
 
+/// The ghosts' motion as their owners hold it now, written at the ghosts' slots of `position` (if
+/// not null), `velocity` and `angularVelocity` (arrays of the store's size); refreshGhosts with
+/// the store's own arrays. Collective.
+void ghostMotion(const dem::ParticleStore& p, const Halo& h, const Collective& comm, Vec3* position,
+                 Vec3* velocity, Vec3* angularVelocity);
+
 /// Adds the force and torque summed on each ghost to its owner's sums (ascending sending rank)
 /// and zeroes the ghosts' sums. Collective.
 void returnGhostForces(dem::ParticleStore& p, const Halo& h, const Collective& comm);

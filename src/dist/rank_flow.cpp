@@ -3,6 +3,7 @@
 #include "dem/particle_changes.h"
 #include "dist/bytes.h"
 #include "dist/rank_gather.h"
+#include "dist/rank_sums.h"
 
 #include <span>
 #include <string>
@@ -62,30 +63,16 @@ std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, c
     for (std::size_t k = 0; k < outlets.size(); ++k)
         counts[k] = outlets[k].count;
     comm.sum(counts);
-    Buffers out(static_cast<std::size_t>(comm.size()));
-    ByteWriter w{out[0]};
+    std::vector<Real> masses;
     for (const dem::Outlet& o : outlets)
-        w.put(o.mass);
-    if (everyRank)
-        for (std::size_t b = 1; b < out.size(); ++b)
-            out[b] = out[0];
-    const Buffers in = comm.exchange(std::move(out));
+        masses.push_back(o.mass);
+    masses = sumInRankOrder(masses, comm, everyRank);
     if (!everyRank && comm.rank() != 0)
         return totals;
     for (std::size_t k = 0; k < outlets.size(); ++k)
     {
         totals[k].count = counts[k];
-        totals[k].mass = 0;
-    }
-    for (int a = 0; a < comm.size(); ++a) // (rank order: one order of the sums)
-    {
-        if (in[a].size() != outlets.size() * sizeof(Real))
-            throw SimulationError("MPI exchange: outlet masses from rank " + std::to_string(a) + ": " +
-                                  std::to_string(in[a].size()) + " bytes for " +
-                                  std::to_string(outlets.size()) + " outlets");
-        ByteReader r{in[a]};
-        for (dem::Outlet& o : totals)
-            o.mass += r.get<Real>();
+        totals[k].mass = masses[k];
     }
     return totals;
 }

@@ -271,4 +271,13 @@ std::uint32_t RankStep::failedParticleId(const dem::World& world) const
     return kNone - static_cast<std::uint32_t>(v);
 }
 
+void RankStep::velocitiesAfterStep(const dem::World& world, std::vector<Vec3>& velocity,
+                                   std::vector<Vec3>& angularVelocity)
+{
+    const dem::ParticleStore& p = world.particles;
+    velocity = p.velocity;
+    angularVelocity = p.angularVelocity;
+    ghostMotion(p, halo_, comm_, nullptr, velocity.data(), angularVelocity.data());
+}
+
 } // namespace veridem::dist

@@ -54,6 +54,9 @@ class RankStep final : public dem::RankExchange
     /// r_max + skin + touch reach [m]: how far from a region its ghosts reach.
     Real haloWidth() const { return haloWidth_; }
     void combineHealth(dem::World& world) override;
+    std::size_t ownedParticles() const override { return halo_.owned; }
+    void velocitiesAfterStep(const dem::World& world, std::vector<Vec3>& velocity,
+                             std::vector<Vec3>& angularVelocity) override;
 
     /// After a step whose combined health is bad: the id of the particle it names (the first
     /// non-finite one, else the one with the largest overlap; the lowest id on a tie). Collective.

@@ -5,7 +5,8 @@
 Each OTHER must have the reference's files with the same rows and columns: thermo.csv and
 walls.csv (the same times, walls and particle and contact counts), particles.csv (the same times
 and ids), outlets.csv if there is one (the same counts). The kinetic energies and the outlets'
-masses must agree within 1e-9 relative and the positions within 1e-12 m: another
+masses must agree within 1e-9 relative, the energy ledger's terms (with `[output] energy`) within
+1e-9 of the initial energy, and the positions within 1e-12 m: another
 rank count sums each particle's contacts in another order (tests/dist/mpi_step_check.cpp gives the
 bound). Exit 1 on the first difference, naming the file, row and column.
 """
@@ -35,6 +36,7 @@ def compare(reference, other):
         if len(a) != len(b) or a[0] != b[0]:
             fail(f"{other}/{name}: {len(b)} rows with header {b[0]}, expected {len(a)} with {a[0]}")
         header = a[0]
+        ledger = "energy_initial" in header
         if name == "particles.csv":  # (rows by time and id: one process keeps its store's order)
             a[1:] = sorted(a[1:], key=lambda r: (float(r[0]), int(r[1])))
             b[1:] = sorted(b[1:], key=lambda r: (float(r[0]), int(r[1])))
@@ -46,6 +48,10 @@ def compare(reference, other):
                         fail(f"{other}/{name} line {line}: t = {v}, expected {u}")
                     if key != "t" and u != v:
                         fail(f"{other}/{name} line {line}: {key} = {v}, expected {u}")
+                elif ledger and (key == "elastic" or key.split("_")[0] in ("work", "dissipated", "energy")):
+                    scale = max(abs(float(u)), abs(float(x[header.index("energy_initial")])))
+                    if abs(float(v) - float(u)) > KINETIC * scale:
+                        fail(f"{other}/{name} line {line}: {key} = {v}, expected {u} within {KINETIC} of {scale} J")
                 elif key.startswith("kinetic") or key == "mass":
                     if abs(float(v) - float(u)) > KINETIC * abs(float(u)):
                         fail(f"{other}/{name} line {line}: {key} = {v}, expected {u} within {KINETIC} relative")
