@@ -143,8 +143,8 @@ int runCases(const RunRequest& request)
                 if (!request.names.empty())
                     throw InputError("verification case '" + c.name +
                                      "' runs in one process only (it steps its world itself); under "
-                                     "mpirun the cases labelled 'ranks' run (`veridem verify --label ranks "
-                                     "--list` shows their labels)");
+                                     "mpirun the cases labelled 'ranks' run (`veridem verify --list` shows "
+                                     "each case's labels)");
                 ++leftOut;
                 continue;
             }
