@@ -4,9 +4,12 @@
 usage: compare_verify.py ONE.json OTHER.json [OTHER.json ...] [--max-relative R]
 
 Every quantity of every case in ONE (one process) must be in each OTHER with the same verdict,
-and its measured value within R relative to ONE's (R = 0: the same bits; R = none: not
-compared, for chaotic many-particle flows, whose round-off differences grow to the spread of the
-realisations: the verdicts must agree). Prints each quantity's difference; exits 1 on a mismatch.
+and its measured value within R relative to ONE's (R = 0: the same bits). With R = none the values
+and verdicts are printed, not compared: in chaotic many-particle flows the round-off of another
+summation order grows to the spread of the realisations, so each rank count is another draw of
+the case's statistics, and a quantity near its threshold may pass in one draw and fail in another
+(docs/bulk-checks.md gives the comparison); the cases and their quantities must then only all be
+there. Exits 1 on a mismatch.
 """
 import json
 import re
@@ -41,7 +44,7 @@ def main(argv):
             theirs = other[name]["quantities"]
             if other[name]["passed"] != case["passed"]:
                 print(f"{path}: {name}: verdict {other[name]['passed']} against {case['passed']}")
-                bad += 1
+                bad += 0 if limit == float("inf") else 1
             if len(theirs) != len(case["quantities"]):
                 print(f"{path}: {name}: {len(theirs)} quantities against {len(case['quantities'])}")
                 bad += 1
@@ -58,11 +61,15 @@ def main(argv):
                     diff = 0.0 if same else float("inf")
                 else:
                     diff = abs(a - b) / max(abs(a), 1e-300) if a != b else 0.0
+                if limit == float("inf"):
+                    verdicts = "" if t["passed"] == q["passed"] else f", verdict {t['passed']} against {q['passed']}"
+                    print(f"    {name}: {q['name']}: {a!r} vs {b!r} (relative difference {diff:.3g}{verdicts}) [{path}]")
+                    continue
                 ok = diff <= limit and t["passed"] == q["passed"]
                 print(f"{'ok ' if ok else 'BAD'} {name}: {q['name']}: {a!r} vs {b!r} "
                       f"(relative difference {diff:.3g}) [{path}]")
                 bad += 0 if ok else 1
-    what = "the same verdicts" if limit == float("inf") else f"the same results (relative {limit:g})"
+    what = "every case and quantity there" if limit == float("inf") else f"the same results (relative {limit:g})"
     print(f"PASS: {what}" if bad == 0 else f"FAIL: {bad} differences")
     return 0 if bad == 0 else 1
 
