@@ -19,7 +19,8 @@
 //
 // Regions. A part's region is its box with the faces on the bounds moved to infinity, so the
 // regions tile all of space and a particle that leaves the bounds between two decompositions
-// still has one owner (owner()). Periodic axes (their images as ghosts) are not built yet.
+// still has one owner (owner()). A periodic axis is not cut (`cuttable`): each region spans it
+// whole, and its pairs through the periodic faces stay on one rank.
 #pragma once
 
 #include "core/vec3.h"

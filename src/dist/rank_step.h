@@ -16,7 +16,7 @@
 // Bits. On a given rank count a run gives the same bits every time and on any thread count (each
 // rank's sums have a fixed order, the exchanges a fixed order by rank). Another rank count gives
 // another order of each particle's contact sum, so its results differ at round-off
-// (docs/architecture.md; measured in tests/dist/mpi_run_check.cpp).
+// (docs/architecture.md; measured in tests/dist/mpi_step_check.cpp).
 #pragma once
 
 #include "dem/world.h"
