@@ -222,14 +222,11 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         rankStep->distribute(world);
         if (!resume && !flow.empty())
             dist::applyFlow(flow, world, *rankStep, scene.dt); // (step 0 is a flow step)
-        if (resume && !root) // (the checkpoint's totals are counted once, by the first rank)
+        if (resume) // (the checkpoint's totals are counted once, by the first rank)
         {
-            for (dem::Outlet& o : flow.outlets)
-            {
-                o.count = 0;
-                o.mass = 0;
-            }
-            dem::forEachAmount(ledger.state, [](Real& a) { a = 0; });
+            dist::countOnFirstRank(flow.outlets, *options.ranks);
+            if (!root)
+                dem::forEachAmount(ledger.state, [](Real& a) { a = 0; });
         }
     }
     world.wallContacts.setRecordLoads(wallLoads);

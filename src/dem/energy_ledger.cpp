@@ -70,7 +70,8 @@ void EnergyLedger::beforeForces(const World& world, Real dt)
     // Gravity: m g . dx with dx = dt v(t+dt/2), the drift just done (exact: the potential).
     const ParticleStore& p = world.particles;
     Real gravityPower = 0;
-    for (std::size_t i = 0; i < bookedParticles(world); ++i)
+    const std::size_t booked = bookedParticles(world);
+    for (std::size_t i = 0; i < booked; ++i)
         gravityPower += p.mass[i] * dot(world.gravity, p.velocity[i]);
     state.gravityWork += dt * gravityPower;
     records_ = evaluateContacts(world, dt, &state.adhesion);

@@ -55,6 +55,17 @@ bool applyFlow(dem::ParticleFlow& flow, dem::World& world, RankStep& ranks, Real
     return true;
 }
 
+void countOnFirstRank(std::vector<dem::Outlet>& outlets, const Collective& comm)
+{
+    if (comm.rank() == 0)
+        return;
+    for (dem::Outlet& o : outlets)
+    {
+        o.count = 0;
+        o.mass = 0;
+    }
+}
+
 std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, const Collective& comm,
                                       bool everyRank)
 {

@@ -26,6 +26,11 @@ namespace veridem::dist
 /// rank. Collective.
 bool applyFlow(dem::ParticleFlow& flow, dem::World& world, RankStep& ranks, Real dt);
 
+/// Totals every rank holds alike (read from one checkpoint, or a case's whole world) made ready to
+/// be summed over the ranks again: the first rank keeps the outlets' counts and masses, the others
+/// start from zero. Not collective.
+void countOnFirstRank(std::vector<dem::Outlet>& outlets, const Collective& comm);
+
 /// The outlets with their counts and masses summed over the ranks (masses added in rank order), on
 /// rank 0, or on every rank with `everyRank`; elsewhere this rank's own. Collective.
 std::vector<dem::Outlet> outletTotals(const std::vector<dem::Outlet>& outlets, const Collective& comm,

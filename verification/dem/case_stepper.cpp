@@ -21,13 +21,8 @@ CaseStepper::CaseStepper(dem::World& world, const CaseContext& context, dem::Par
     }
     ranks_ = std::make_unique<dist::RankStep>(*context.ranks);
     ranks_->distribute(world);
-    // Every rank holds the same totals (finish); they are counted once, by the first rank.
-    if (flow_ && context.ranks->rank() != 0)
-        for (dem::Outlet& o : flow_->outlets)
-        {
-            o.count = 0;
-            o.mass = 0;
-        }
+    if (flow_) // (every rank holds the same totals: finish)
+        dist::countOnFirstRank(flow_->outlets, *context.ranks);
 }
 
 CaseStepper::~CaseStepper() = default;
