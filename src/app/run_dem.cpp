@@ -129,19 +129,6 @@ void printRollingFrictionConversion(const dem::World& world)
     }
 }
 
-/// Refuses what does not run on several MPI ranks yet, naming it.
-void refuseOnRanks(const io::DemScene& scene, const RunOptions& options)
-{
-    const auto refuse = [&](const std::string& what)
-    {
-        throw InputError(options.sceneFile + ": " + what +
-                         " does not run on several MPI ranks yet; run this scene " +
-                         "in one process (with --threads N for the cores)");
-    };
-    if (scene.world.domain.periodic[0] && scene.world.domain.periodic[1] && scene.world.domain.periodic[2])
-        refuse("a domain periodic along all three axes (the regions are cut across non-periodic axes only)");
-}
-
 } // namespace
 
 int runDemScene(const toml::table& table, const RunOptions& options)
@@ -155,8 +142,6 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         return io::readDemScene(table, options.sceneFile);
     }();
     dem::World& world = scene.world;
-    if (severalRanks)
-        refuseOnRanks(scene, options);
     checkTimeStep(scene, options, root);
     if (root)
         printRollingFrictionConversion(world);

@@ -112,16 +112,24 @@ void numberPartsDepthFirst(Decomposition& d)
 
 } // namespace
 
-Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32_t> weight, int parts,
-                     const Collective& comm, std::array<bool, 3> cuttable)
+std::array<bool, 3> cuttableAxes(const dem::PeriodicDomain& domain)
 {
-    if (!cuttable[0] && !cuttable[1] && !cuttable[2])
-        throw InputError("decomposition: no axis may be cut");
+    const std::array<bool, 3>& periodic = domain.periodic;
+    if (periodic[0] && periodic[1] && periodic[2])
+        return {true, true, true};
+    return {!periodic[0], !periodic[1], !periodic[2]};
+}
+
+Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32_t> weight, int parts,
+                     const Collective& comm, const dem::PeriodicDomain& domain)
+{
+    const std::array<bool, 3> cuttable = cuttableAxes(domain);
     if (parts < 1)
         throw InputError("the domain decomposition needs at least one part, got " + std::to_string(parts));
     if (weight.size() != position.size())
         throw InputError("the domain decomposition needs one weight per particle");
     Decomposition out;
+    out.domain = domain;
 
     // The bounds (maxima of x and of -x) and the total weight: exact on any rank count.
     double extremes[6] = {-kInfinity, -kInfinity, -kInfinity, -kInfinity, -kInfinity, -kInfinity};

@@ -19,13 +19,23 @@
 //
 // Regions. A part's region is its box with the faces on the bounds moved to infinity, so the
 // regions tile all of space and a particle that leaves the bounds between two decompositions
-// still has one owner (owner()). A periodic axis is not cut (`cuttable`): each region spans it
-// whole, and its pairs through the periodic faces stay on one rank.
+// still has one owner (owner()).
+//
+// Periodic axes (dem/periodic.h). The cut prefers the non-periodic axes: a region then spans each
+// periodic axis whole, and a rank finds the pairs through those faces among its own particles and
+// ghosts as one process does. A domain periodic along all three axes is cut across periodic axes
+// (the only ones there are). Either way forEachPartNear looks through the periodic faces: a part
+// whose region comes near an image x + s of x (s a sum of box edges, dem::forEachImageShift) is
+// near x, so the part holds a ghost of the particle at x itself, and its PeriodicPairs pairs it
+// with the image. The positions must be wrapped into the box (RankStep wraps them before it cuts
+// or exchanges), as they are when one process searches for its periodic pairs.
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/periodic.h"
 #include "dist/collective.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -69,25 +79,54 @@ class Decomposition
     std::vector<Box> region;         // per part: where it owns particles (tiles all of space)
     std::vector<std::uint64_t> cost; // per part: the weight of its particles when cut
     Box bounds;                      // the box of all particles when cut [m]
+    dem::PeriodicDomain domain;      // the run's domain box and periodic axes (file comment)
 
     int parts() const { return static_cast<int>(region.size()); }
     /// The part whose region holds x.
     int owner(const Vec3& x) const;
-    /// Calls f(part) for each part whose region comes nearer than `reach` [m] to x (the parts
-    /// that need a ghost copy of a particle at x whose interaction range is `reach`), the owner
-    /// included, in ascending part order.
+    /// Calls f(part) once for each part whose region comes nearer than `reach` [m] to x or, along
+    /// the periodic axes, to one of its images (the parts that need a ghost copy of a particle at
+    /// x whose interaction range is `reach`), the owner included, in ascending part order.
     template <class F> void forEachPartNear(const Vec3& x, Real reach, F&& f) const;
+
+  private:
+    /// forEachPartNear without the images.
+    template <class F> void forEachPartNearPoint(const Vec3& x, Real reach, F&& f) const;
 };
 
+/// The axes bisect may cut across: the non-periodic ones, or all three when every axis of
+/// `domain` is periodic (file comment).
+std::array<bool, 3> cuttableAxes(const dem::PeriodicDomain& domain);
+
 /// Cuts the particles at `position` [m] (this rank's; every rank calls it with its own) with
-/// weights `weight` into `parts` regions by recursive coordinate bisection (file comment), cutting
-/// only the axes marked `cuttable` (the longest of those; a periodic axis is not cut, so each
-/// region spans it whole). Collective: every rank of `comm` must call it; every rank gets the same
-/// decomposition.
+/// weights `weight` into `parts` regions by recursive coordinate bisection (file comment), each box
+/// across the longest of cuttableAxes(domain) (`domain`: the run's box and periodic axes; the
+/// positions wrapped into it along those). Collective: every rank of `comm` must call it; every
+/// rank gets the same decomposition.
 Decomposition bisect(std::span<const Vec3> position, std::span<const std::uint32_t> weight, int parts,
-                     const Collective& comm, std::array<bool, 3> cuttable = {true, true, true});
+                     const Collective& comm, const dem::PeriodicDomain& domain = {});
 
 template <class F> void Decomposition::forEachPartNear(const Vec3& x, Real reach, F&& f) const
+{
+    if (!domain.any())
+    {
+        forEachPartNearPoint(x, reach, f);
+        return;
+    }
+    // The parts near each image, merged: ascending and each once.
+    thread_local std::vector<int> near;
+    near.clear();
+    dem::forEachImageShift(
+        domain, x, reach,
+        [&](const Vec3& shift)
+        { forEachPartNearPoint(x + shift, reach, [&](int part) { near.push_back(part); }); });
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const int part : near)
+        f(part);
+}
+
+template <class F> void Decomposition::forEachPartNearPoint(const Vec3& x, Real reach, F&& f) const
 {
     if (nodes.empty())
     {

@@ -26,12 +26,14 @@ double seconds(Clock::time_point from, Clock::time_point to)
 
 constexpr Real kLeast = std::numeric_limits<Real>::min(); // (a halo of no particles: > 0)
 
-/// The axes the regions may be cut across: not a periodic one (a region spans it whole, so the
-/// pairs through its faces are among a rank's owned particles and ghosts, and PeriodicPairs finds
-/// them as in one process).
-std::array<bool, 3> cuttable(const dem::World& world)
+/// Wraps the particles into the domain box along its periodic axes (a no-op without them) before
+/// the regions are cut or the particles exchanged: forEachPartNear's images assume it
+/// (dist/bisection.h). One process wraps at the same point, the rebuild of the contact lists that
+/// follows (dem::rebuildContactLists), so the positions are the same.
+void wrapIntoBox(dem::World& world)
 {
-    return {!world.domain.periodic[0], !world.domain.periodic[1], !world.domain.periodic[2]};
+    if (world.domain.any())
+        dem::wrapParticles(world.domain, world.particles);
 }
 
 /// Each particle's cost for the cut: 1 plus its touching candidates (the pair stage's work).
@@ -59,6 +61,7 @@ void RankStep::distribute(dem::World& world)
 {
     if (world.prepared) // (a restored world: the particles its outlets retired leave first)
         dem::removeRetiredParticles(world);
+    wrapIntoBox(world);
     dem::ParticleStore& p = world.particles;
     const std::size_t n = p.size();
     // What prepare() sets from all the particles, set here for all ranks alike.
@@ -74,7 +77,7 @@ void RankStep::distribute(dem::World& world)
     const std::size_t lo = n * me / ranks, hi = n * (me + 1) / ranks;
     const std::vector<std::uint32_t> weight = contactWeights(world, n);
     decomposition_ = bisect(std::span(p.position).subspan(lo, hi - lo),
-                            std::span(weight).subspan(lo, hi - lo), comm_.size(), comm_, cuttable(world));
+                            std::span(weight).subspan(lo, hi - lo), comm_.size(), comm_, world.domain);
     ++cuts_;
 
     if (!world.prepared) // a fresh start: prepare this rank's part only (no contacts yet to carry)
@@ -123,7 +126,7 @@ void RankStep::cut(const dem::World& world, std::span<const std::uint8_t> gone)
             x.push_back(world.particles.position[i]);
             w.push_back(weight[i]);
         }
-    decomposition_ = bisect(x, w, comm_.size(), comm_, cuttable(world));
+    decomposition_ = bisect(x, w, comm_.size(), comm_, world.domain);
     ++cuts_;
 }
 
@@ -156,6 +159,7 @@ bool RankStep::afterDrift(dem::World& world, bool rebuild)
 
 void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
 {
+    wrapIntoBox(world);
     dem::ParticleStore& p = world.particles;
     const std::size_t owned = halo_.owned;
     std::vector<std::uint8_t> gone(owned); // retired by an outlet: they leave the store here

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -95,6 +97,110 @@ TEST(Bisection, GhostQueryEqualsBruteForce)
             ASSERT_EQ(found, expected);
             ASSERT_FALSE(found.empty()); // the owner at least
         }
+}
+
+namespace
+{
+
+/// The cloud's box periodic along `periodic`.
+dem::PeriodicDomain cloudBox(std::array<bool, 3> periodic)
+{
+    dem::PeriodicDomain domain;
+    domain.min = {0, 0, 0};
+    domain.max = {0.2, 0.1, 0.05};
+    domain.periodic = periodic;
+    return domain;
+}
+
+/// The 27 shifts of +-1 box edge or none along each axis (0 along a non-periodic axis).
+std::vector<Vec3> allImageShifts(const dem::PeriodicDomain& domain)
+{
+    std::vector<Vec3> shifts;
+    const Vec3 edge = domain.length();
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int k = -1; k <= 1; ++k)
+                shifts.push_back({domain.periodic[0] ? i * edge.x : 0, domain.periodic[1] ? j * edge.y : 0,
+                                  domain.periodic[2] ? k * edge.z : 0});
+    return shifts;
+}
+
+} // namespace
+
+// A domain periodic along all three axes is cut across them (there is no other axis), and the
+// ghost query looks through the faces: every part that owns a point of the box within `reach` of
+// the query point or of one of its images is found (brute force over the 27 images and the parts'
+// regions clipped to the box), and nothing beyond a region within `reach` of some image (the query
+// may over-include a region near an image just outside the box: a ghost too many, never too few).
+TEST(Bisection, PeriodicGhostQueryLooksThroughTheFaces)
+{
+    const dem::PeriodicDomain domain = cloudBox({true, true, true});
+    EXPECT_EQ(cuttableAxes(domain), (std::array<bool, 3>{true, true, true}));
+    const auto cloud = clouds::makeCloud(3000, 5);
+    const Decomposition d = bisect(cloud.position, cloud.weight, 6, SerialCollective{}, domain);
+    std::array<int, 3> cutsAlong{0, 0, 0};
+    for (const Decomposition::Node& n : d.nodes)
+        ++cutsAlong[static_cast<std::size_t>(n.axis)];
+    EXPECT_GT(cutsAlong[0], 0); // the longest axis, x (0.2 m), is cut
+    const std::vector<Vec3> shifts = allImageShifts(domain);
+    const auto queries = clouds::makeCloud(2000, 6); // (in the box: wrapped, as RankStep leaves them)
+    std::size_t throughFaces = 0;
+    for (const Real reach : {0.001, 0.01, 0.02})
+        for (const Vec3& x : queries.position)
+        {
+            std::vector<int> found, direct;
+            d.forEachPartNear(x, reach, [&](int p) { found.push_back(p); });
+            ASSERT_TRUE(std::is_sorted(found.begin(), found.end()));
+            ASSERT_EQ(std::adjacent_find(found.begin(), found.end()), found.end()); // each once
+            for (int p = 0; p < d.parts(); ++p)
+            {
+                Box inBox = d.region[p]; // the part's points in the box
+                for (int a = 0; a < 3; ++a)
+                {
+                    component(inBox.lo, a) = std::max(component(inBox.lo, a), component(domain.min, a));
+                    component(inBox.hi, a) = std::min(component(inBox.hi, a), component(domain.max, a));
+                }
+                bool needed = false, nearSomeImage = false;
+                for (const Vec3& s : shifts)
+                {
+                    needed = needed || distanceSquared(inBox, x + s) < reach * reach;
+                    nearSomeImage = nearSomeImage || distanceSquared(d.region[p], x + s) < reach * reach;
+                }
+                const bool listed = std::find(found.begin(), found.end(), p) != found.end();
+                ASSERT_TRUE(!needed || listed) << "part " << p << " missed, reach " << reach;
+                ASSERT_TRUE(!listed || nearSomeImage) << "part " << p << " listed, reach " << reach;
+                if (distanceSquared(d.region[p], x) < reach * reach)
+                    direct.push_back(p);
+            }
+            throughFaces += found.size() > direct.size();
+        }
+    EXPECT_GT(throughFaces, 100u); // (the check saw parts found through the faces)
+}
+
+// With a non-periodic axis the periodic axes are not cut: each region spans them whole, so the
+// images add no part and the query is the plain one (a chute's decomposition is unchanged).
+TEST(Bisection, UncutPeriodicAxesAddNoGhosts)
+{
+    const dem::PeriodicDomain domain = cloudBox({true, true, false});
+    EXPECT_EQ(cuttableAxes(domain), (std::array<bool, 3>{false, false, true}));
+    const auto cloud = clouds::makeCloud(3000, 7);
+    const Decomposition d = bisect(cloud.position, cloud.weight, 4, SerialCollective{}, domain);
+    for (const Decomposition::Node& n : d.nodes)
+        EXPECT_EQ(n.axis, 2);
+    const Decomposition plain = [&]
+    {
+        Decomposition copy = d;
+        copy.domain = {};
+        return copy;
+    }();
+    const auto queries = clouds::makeCloud(2000, 8);
+    for (const Vec3& x : queries.position)
+    {
+        std::vector<int> found, expected;
+        d.forEachPartNear(x, 0.01, [&](int p) { found.push_back(p); });
+        plain.forEachPartNear(x, 0.01, [&](int p) { expected.push_back(p); });
+        ASSERT_EQ(found, expected);
+    }
 }
 
 TEST(Bisection, DegenerateInputs)
