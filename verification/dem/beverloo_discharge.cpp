@@ -47,10 +47,11 @@
 // Ruled out as the cause: friction, the silo's width, stiffness (above), the polydisperse mean
 // diameter (it enters k, not C). rho_b is the poured bulk density, as in Beverloo's correlation;
 // the region just above the orifice is 20-27 % less dense (printed). Restitution e = 0.9 instead
-// of 0.5 (one run): C = 0.497 +- 0.017, k = 1.52: not the restitution either. The range of
-// orifices is (docs/bulk-checks.md): in a 30 d silo with orifices 5.5-12 d (two fills, outside the
-// suite), C = 0.49 over 5.5-8.5 d, 0.54 over 5.5-12 d and 0.57 over 8.5-12 d: the 5/2-power law
-// with a constant k does not hold down to these small orifices, where C comes out low.
+// of 0.5 (one run): C = 0.497 +- 0.017, k = 1.52: not the restitution either. The cause is the
+// range of orifices (docs/bulk-checks.md): in a 30 d silo with orifices 5.5-12 d (two fills,
+// outside the suite), C = 0.49 over 5.5-8.5 d, 0.54 over 5.5-12 d and 0.57 over 8.5-12 d: the
+// 5/2-power law with a constant k does not hold down to these small orifices, where C comes out
+// low.
 #include "bulk.h"
 #include "dem/walls/triangle_mesh.h"
 
