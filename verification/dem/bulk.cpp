@@ -196,12 +196,16 @@ Real meanOf(const std::vector<Real>& v, std::size_t from, std::size_t to)
 
 std::string formatted(const char* format, ...)
 {
-    char buffer[512];
-    va_list args;
+    va_list args, again;
     va_start(args, format);
-    std::vsnprintf(buffer, sizeof buffer, format, args);
+    va_copy(again, args);
+    const int size = std::vsnprintf(nullptr, 0, format, args);
     va_end(args);
-    return buffer;
+    std::string text(size > 0 ? std::size_t(size) : 0, '\0');
+    if (size > 0)
+        std::vsnprintf(text.data(), text.size() + 1, format, again);
+    va_end(again);
+    return text;
 }
 
 } // namespace veridem::verify
