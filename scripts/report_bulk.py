@@ -19,7 +19,7 @@ def beverloo_figure(out_dir, case, named):
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     ratio, rate, error, fit = (column(header, data, c) for c in ("D_over_d", "W", "W_error", "W_fit"))
     left.errorbar(ratio, 1e3 * rate, yerr=None if error is None else 1e3 * error, fmt="o", capsize=3,
-                  label="W (0.1-0.45 s after opening): mean of the fills ± standard error")
+                  label="W over the rate window: mean of the fills ± standard error")
     order = np.argsort(ratio)
     left.plot(ratio[order], 1e3 * fit[order], "-", label="Beverloo, C and k of the weighted fit")
     left.set_xlabel("orifice D / d")
