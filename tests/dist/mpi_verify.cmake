@@ -1,8 +1,8 @@
 # tests/dist/CMakeLists.txt: mpi_verify_cases. `veridem verify` of the cases CASES (a ;-list) in one
 # process and under mpirun on each count in RANKS, compared by compare_verify.py (-DLIMIT: largest
 # relative difference of a measured value; 0: the same bits; none: verdicts only). With
-# -DALLOW_FAILING=ON a case may fail (exit status 1), as long as it fails on every rank count (a
-# failing physics check stays failing: beverloo_discharge). -DVERIDEM, -DMPIEXEC, -DCOMPARE, -DWORK.
+# -DALLOW_FAILING=ON a case may fail (exit status 1), as long as it fails on every rank count.
+# -DVERIDEM, -DMPIEXEC, -DCOMPARE, -DWORK.
 file(REMOVE_RECURSE ${WORK})
 set(selection)
 foreach(name ${CASES})
