@@ -24,10 +24,10 @@
 // its place; an outlet one d below removes the spheres that fell through (nearer outlets mean
 // slower spheres and fewer neighbour rebuilds), and W is the least-squares slope of its removed
 // mass over t = 0.1-0.35 s after opening (the flow is established within ~0.05-0.1 s, a few
-// sqrt(D/g)). In the first fill the largest orifice runs for 0.55 s, which drains ~40 % of the
+// sqrt(D/g)). In the first fill the largest orifice runs for 0.55 s, which drains ~44 % of the
 // silo (the head falls from ~20 d to ~14 d), for the height test: the rates over the first and
 // last thirds of 0.1-0.55 s agree within 5 %, where a liquid's rate (Torricelli, W ~ sqrt(H))
-// would drop by ~17 %.
+// would drop by ~16 %.
 //
 // Sizes: D/d = 9, 10, 11, 12: above 5 d (the issue), clear of the clogging range of spheres
 // (avalanches diverge near D/d ~ 4.9, Zuriguel et al. 2005, PRE 71:051303), and where the
