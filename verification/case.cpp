@@ -1,7 +1,10 @@
 #include "case.h"
 
+#include "exec/task_sharing.h"
+
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 namespace veridem::verify
 {
@@ -25,6 +28,28 @@ bool CaseResult::passed() const
 {
     return !quantities.empty() &&
            std::all_of(quantities.begin(), quantities.end(), [](const Quantity& q) { return q.passed(); });
+}
+
+void CaseContext::forEach(std::size_t count, const std::function<void(std::size_t)>& task) const
+{
+    if (tasks)
+    {
+        tasks->forEach(count, task);
+        return;
+    }
+    std::exception_ptr first;
+    for (std::size_t i = 0; i < count; ++i)
+        try
+        {
+            task(i);
+        }
+        catch (...)
+        {
+            if (!first)
+                first = std::current_exception();
+        }
+    if (first)
+        std::rethrow_exception(first);
 }
 
 std::vector<Case>& registry()

@@ -13,6 +13,10 @@ namespace veridem::dist
 {
 class Collective;
 }
+namespace veridem::exec
+{
+class TaskSharing;
+}
 
 namespace veridem::verify
 {
@@ -58,6 +62,15 @@ struct CaseContext
     /// Under `mpirun -np N veridem verify` (N > 1): the ranks, over which the cases labelled
     /// "ranks" step their worlds (dem/case_stepper.h); null in one process.
     const dist::Collective* ranks = nullptr;
+    /// The runner's task sharing (exec/task_sharing.h) when cases run side by side; null otherwise.
+    exec::TaskSharing* tasks = nullptr;
+
+    /// Runs task(i) for every i in [0, count) and returns when all have returned: on the runner's
+    /// idle workers as well as this thread when cases run side by side, in index order on this
+    /// thread otherwise (one worker, or on ranks). For the independent parts of a case (its fills,
+    /// its piles, its sweep's runs); each must write only its own results, which then do not depend
+    /// on where it ran. The first exception (by index) is rethrown once all have returned.
+    void forEach(std::size_t count, const std::function<void(std::size_t)>& task) const;
 };
 
 /// An expected order of the dt error of the quantities whose name starts with `prefix`.

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "dist/collective.h"
+#include "exec/task_sharing.h"
 #include "exec/thread_pool.h"
 #include "sweep.h"
 
@@ -163,8 +164,16 @@ int runCases(const RunRequest& request)
         std::string error;
     };
     std::vector<Outcome> outcomes(chosen.size());
+    // Workers (one per core, or --jobs) each run one case at a time; a case that splits its work
+    // into tasks (CaseContext::forEach) shares them with the workers that have no case left to
+    // start. On several ranks: none (the cases run on this thread, which alone makes MPI calls).
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t jobs =
+        onRanks ? 0 : (request.jobs > 0 ? static_cast<std::size_t>(request.jobs) : cores);
+    exec::TaskSharing sharing;
     const CaseContext context{.showProgress = request.showProgress,
-                              .ranks = onRanks ? request.ranks : nullptr};
+                              .ranks = onRanks ? request.ranks : nullptr,
+                              .tasks = jobs > 1 ? &sharing : nullptr};
     const auto runOne = [&](std::size_t k)
     {
         Outcome o{chosen[k], {}, {}};
@@ -187,12 +196,6 @@ int runCases(const RunRequest& request)
     };
 
     // Workers take the cases in registry order; this thread reports them in that order.
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    // On several ranks: none (the cases run on this thread, which alone makes MPI calls).
-    const std::size_t jobs =
-        onRanks ? 0
-                : std::min<std::size_t>(request.jobs > 0 ? static_cast<std::size_t>(request.jobs) : cores,
-                                        std::max<std::size_t>(chosen.size(), 1));
     std::mutex mutex;
     std::condition_variable finished;
     std::vector<char> done(chosen.size(), 0);
@@ -202,13 +205,21 @@ int runCases(const RunRequest& request)
         // One thread per case's loops when cases run side by side: the cores are taken by the
         // other cases.
         const exec::ThreadCountOverride loops(jobs > 1 ? 1 : exec::threads());
-        for (std::size_t k = next++; k < chosen.size(); k = next++)
+        for (;;)
         {
-            Outcome o = runOne(k);
-            const std::lock_guard<std::mutex> lock(mutex);
-            outcomes[k] = std::move(o);
-            done[k] = 1;
-            finished.notify_all();
+            if (sharing.runPending()) // another case's task first: that case is already running
+                continue;
+            const std::size_t k = next++;
+            if (k < chosen.size())
+            {
+                Outcome o = runOne(k);
+                const std::lock_guard<std::mutex> lock(mutex);
+                outcomes[k] = std::move(o);
+                done[k] = 1;
+                finished.notify_all();
+            }
+            else if (!sharing.waitForTask()) // no case left to start: help the running ones
+                return;
         }
     };
     // Joined on every way out: an exception on this thread (a series that cannot be written) must
@@ -218,14 +229,16 @@ int runCases(const RunRequest& request)
         std::vector<std::thread> threads;
         std::atomic<std::size_t>& next;
         std::size_t count;
+        exec::TaskSharing& sharing;
         ~Workers()
         {
             next = count;
+            sharing.close();
             for (auto& t : threads)
                 if (t.joinable())
                     t.join();
         }
-    } workers{{}, next, chosen.size()};
+    } workers{{}, next, chosen.size(), sharing};
     for (std::size_t w = 0; w < jobs; ++w)
         workers.threads.emplace_back(worker);
 
@@ -258,6 +271,7 @@ int runCases(const RunRequest& request)
             for (const auto& s : o.result.series)
                 writeSeries(std::filesystem::path(*request.seriesDir) / c.name, s);
     }
+    sharing.close();
     for (auto& w : workers.threads)
         w.join();
 

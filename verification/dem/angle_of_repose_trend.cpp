@@ -41,6 +41,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace veridem::verify
 {
@@ -144,9 +146,9 @@ Real settledTop(const World& w, Real floor, Real below)
     return top;
 }
 
-/// Pours the pile of inserter seed `seed` and returns its two flank angles [deg]; the first
-/// seed's surface and sphere count go to `pile`.
-std::vector<Real> pourOne(Real mu, Real rolling, int seed, Pile& pile, const CaseContext& context)
+/// Pours the pile of inserter seed `seed` and returns its two flank angles [deg]; its surface and
+/// sphere count go to `surface` unless that is null.
+std::vector<Real> pourOne(Real mu, Real rolling, int seed, Pile* surface, const CaseContext& context)
 {
     const std::string label =
         formatted("angle_of_repose_trend (mu_s %.2g, mu_r %.2g mm, seed %d)", mu, rolling * 1e3, seed);
@@ -166,14 +168,15 @@ std::vector<Real> pourOne(Real mu, Real rolling, int seed, Pile& pile, const Cas
     runScene(scene, kRest, 0, context, label, {});
 
     const World& w = scene.world;
-    const bool first = pile.binX.empty();
+    const bool first = surface != nullptr;
     const int bins = int(std::lround(2 * kHalfBase / kD));
     std::vector<Real> top(std::size_t(bins), -std::numeric_limits<Real>::infinity());
     for (std::size_t i = 0; i < w.particles.size(); ++i)
     {
         if (w.particles.fixed[i])
             continue;
-        pile.spheres += first;
+        if (first)
+            ++surface->spheres;
         const int b = int(std::floor((w.particles.position[i].x + kHalfBase) / kD));
         if (b >= 0 && b < bins)
             top[std::size_t(b)] =
@@ -187,8 +190,8 @@ std::vector<Real> pourOne(Real mu, Real rolling, int seed, Pile& pile, const Cas
             continue;
         if (first)
         {
-            pile.binX.push_back(x);
-            pile.binTop.push_back(top[std::size_t(b)]);
+            surface->binX.push_back(x);
+            surface->binTop.push_back(top[std::size_t(b)]);
         }
         if (std::abs(x) >= kFlankFrom && std::abs(x) <= kFlankTo)
             flankX[x > 0].push_back(x), flankZ[x > 0].push_back(top[std::size_t(b)]);
@@ -200,27 +203,40 @@ std::vector<Real> pourOne(Real mu, Real rolling, int seed, Pile& pile, const Cas
     return {angle[0], angle[1]};
 }
 
-/// Pours kPiles piles and measures their angle (header comment): a pile's angle is the mean of its
-/// two flanks (which are not independent: an avalanche down one flank changes both), the pair's the
-/// mean over the piles with the standard error of that mean.
-Pile pour(Real mu, Real rolling, const CaseContext& context)
+/// Pours kPiles piles for each friction pair (every pile a task, CaseContext::forEach) and measures
+/// their angle (header comment): a pile's angle is the mean of its two flanks (which are not
+/// independent: an avalanche down one flank changes both), the pair's the mean over the piles with
+/// the standard error of that mean. The first pile's surface is the one drawn.
+std::vector<Pile> pour(const std::vector<std::pair<Real, Real>>& pairs, const CaseContext& context)
 {
-    Pile pile;
-    pile.slidingFriction = mu;
-    pile.rollingFriction = rolling;
-    std::vector<Real> flanks, piles; // [deg]
-    for (int j = 1; j <= kPiles; ++j)
+    std::vector<Pile> piles(pairs.size());
+    std::vector<std::vector<Real>> flanks(pairs.size() * kPiles); // [deg], per pair and pile
+    context.forEach(flanks.size(),
+                    [&](std::size_t task)
+                    {
+                        const std::size_t p = task / kPiles;
+                        const int j = int(task % kPiles) + 1;
+                        flanks[task] = pourOne(pairs[p].first, pairs[p].second, kSeedBase + j,
+                                               j == 1 ? &piles[p] : nullptr, context);
+                    });
+    for (std::size_t p = 0; p < pairs.size(); ++p)
     {
-        const std::vector<Real> two = pourOne(mu, rolling, kSeedBase + j, pile, context);
-        flanks.insert(flanks.end(), two.begin(), two.end());
-        piles.push_back(meanOf(two));
+        Pile& pile = piles[p];
+        pile.slidingFriction = pairs[p].first;
+        pile.rollingFriction = pairs[p].second;
+        std::vector<Real> all, means;
+        for (int j = 0; j < kPiles; ++j)
+        {
+            const std::vector<Real>& two = flanks[p * kPiles + std::size_t(j)];
+            all.insert(all.end(), two.begin(), two.end());
+            means.push_back(meanOf(two));
+        }
+        const MeanWithError angle = meanWithError(means);
+        pile.angle = angle.mean;
+        pile.uncertainty = angle.standardError;
+        pile.spread = *std::max_element(all.begin(), all.end()) - *std::min_element(all.begin(), all.end());
     }
-    const MeanWithError angle = meanWithError(piles);
-    pile.angle = angle.mean;
-    pile.uncertainty = angle.standardError;
-    pile.spread =
-        *std::max_element(flanks.begin(), flanks.end()) - *std::min_element(flanks.begin(), flanks.end());
-    return pile;
+    return piles;
 }
 
 /// The rise of the angle from `low` to `high`: more than the sum of the two angles' standard errors.
@@ -242,11 +258,16 @@ CaseResult run(const CaseContext& context)
     constexpr Real kMu = 0.4, kRolling = 0.04e-3;
     const std::array<Real, 3> rollings{0.01e-3, kRolling, 0.1e-3};
     const std::array<Real, 4> slidings{0.1, 0.2, kMu, 0.8};
-    std::vector<Pile> byRolling, bySliding;
+    std::vector<std::pair<Real, Real>> pairs; // (mu_s, mu_r): the rolling series, then the sliding one
     for (const Real r : rollings)
-        byRolling.push_back(pour(kMu, r, context));
+        pairs.emplace_back(kMu, r);
     for (const Real m : slidings)
-        bySliding.push_back(m == kMu ? byRolling[1] : pour(m, kRolling, context));
+        if (m != kMu)
+            pairs.emplace_back(m, kRolling);
+    const std::vector<Pile> poured = pour(pairs, context);
+    std::vector<Pile> byRolling(poured.begin(), poured.begin() + rollings.size()), bySliding;
+    for (std::size_t i = 0, next = rollings.size(); i < slidings.size(); ++i)
+        bySliding.push_back(slidings[i] == kMu ? byRolling[1] : poured[next++]);
 
     CaseResult result;
     for (const auto* piles : {&byRolling, &bySliding})

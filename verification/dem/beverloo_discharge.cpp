@@ -52,6 +52,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -212,15 +213,17 @@ LineFit rateBetween(const Discharge& d, Real from, Real until)
 /// One fill of the silo (inserter seed `seed`) and its discharges through every orifice.
 struct Fill
 {
+    io::DemScene scene;  // the filled silo, gate closed
     Real rho = 0;        // poured bulk density [kg/m^3]
     Real totalMass = 0;  // [kg]
     Real fillHeight = 0; // [m]
     std::size_t spheres = 0;
-    std::vector<Discharge> runs;        // per orifice
-    std::vector<Real> rates;            // [kg/s] over kFrom-kUntil, per orifice
-    std::vector<Real> r2s;              // of the removed mass's line, per orifice
-    Real c = 0, k = 0;                  // this fill's own (unweighted) Beverloo fit
-    Real fillCpu = 0, dischargeCpu = 0; // [s]
+    std::vector<Discharge> runs;    // per orifice
+    std::vector<Real> rates;        // [kg/s] over kFrom-kUntil, per orifice
+    std::vector<Real> r2s;          // of the removed mass's line, per orifice
+    Real c = 0, k = 0;              // this fill's own (unweighted) Beverloo fit
+    Real fillCpu = 0;               // [s]
+    std::vector<Real> dischargeCpu; // [s] per orifice
 };
 
 /// C and k from W^(2/5) = (C rho sqrt(g))^(2/5) (D - k d): slope and intercept of the line in D.
@@ -229,11 +232,14 @@ std::pair<Real, Real> beverlooCk(Real slope, Real intercept, Real rho)
     return {std::pow(slope, 2.5) / (rho * std::sqrt(kG)), -intercept / slope / kD};
 }
 
-Fill fillAndDischarge(std::uint64_t seed, bool longDrain, const CaseContext& context)
+/// Pours the silo with inserter seed `seed` and measures its bulk density.
+Fill fillSilo(std::uint64_t seed, const CaseContext& context)
 {
     const Real cpu0 = threadCpuSeconds();
     const std::string label = formatted("beverloo_discharge (fill, seed %llu)", (unsigned long long)seed);
-    io::DemScene scene = sceneFromText(sceneText(seed), "beverloo_discharge");
+    Fill f;
+    f.scene = sceneFromText(sceneText(seed), "beverloo_discharge");
+    io::DemScene& scene = f.scene;
     for (const Real ratio : kOrifices)
         scene.world.walls.push_back(orificePlate(ratio * kD));
     requireResolvedContacts(scene, "beverloo_discharge");
@@ -245,7 +251,6 @@ Fill fillAndDischarge(std::uint64_t seed, bool longDrain, const CaseContext& con
     runScene(scene, kSettle, 0, context, label, {});
 
     // Poured bulk density: the centres between 2 d above the base and 3 d below the top.
-    Fill f;
     const World& filled = scene.world;
     const Real top = topOfParticles(filled), low = 2 * kD, high = top - 3 * kD;
     Real slabMass = 0;
@@ -259,14 +264,19 @@ Fill fillAndDischarge(std::uint64_t seed, bool longDrain, const CaseContext& con
     f.rho = slabMass / (kPi * kSiloRadius * kSiloRadius * (high - low));
     f.fillHeight = f.totalMass / (f.rho * kPi * kSiloRadius * kSiloRadius);
     f.spheres = filled.particles.size();
-    const Real cpu1 = threadCpuSeconds();
+    f.runs.resize(kOrifices.size());
+    f.dischargeCpu.resize(kOrifices.size());
+    f.fillCpu = threadCpuSeconds() - cpu0;
+    return f;
+}
 
+/// The rates of a fill's discharges and its own fit.
+void fitFill(Fill& f)
+{
     std::vector<Real> w25, orifice;
     for (std::size_t o = 0; o < kOrifices.size(); ++o)
     {
-        const bool longest = longDrain && o + 1 == kOrifices.size();
-        f.runs.push_back(discharge(scene, 2 + o, kOrifices[o] * kD, longest ? kLongDrain : kUntil, context));
-        const LineFit fit = rateBetween(f.runs.back(), kFrom, kUntil);
+        const LineFit fit = rateBetween(f.runs[o], kFrom, kUntil);
         f.rates.push_back(fit.slope);
         f.r2s.push_back(fit.r2);
         w25.push_back(std::pow(fit.slope, 0.4));
@@ -274,16 +284,28 @@ Fill fillAndDischarge(std::uint64_t seed, bool longDrain, const CaseContext& con
     }
     const LineFit line = fitLine(orifice, w25);
     std::tie(f.c, f.k) = beverlooCk(line.slope, line.intercept, f.rho);
-    f.fillCpu = cpu1 - cpu0;
-    f.dischargeCpu = threadCpuSeconds() - cpu1;
-    return f;
 }
 
 CaseResult run(const CaseContext& context)
 {
-    std::vector<Fill> fills;
-    for (int f = 0; f < kFills; ++f)
-        fills.push_back(fillAndDischarge(kSeedBase + std::uint64_t(f), f == 0, context));
+    // The fills, then every fill's discharges, each a task (CaseContext::forEach); the first
+    // fill's largest orifice, which runs longest (the height test), first.
+    std::vector<Fill> fills(kFills);
+    context.forEach(kFills, [&](std::size_t f) { fills[f] = fillSilo(kSeedBase + f, context); });
+    const std::size_t orifices = kOrifices.size();
+    context.forEach(kFills * orifices,
+                    [&](std::size_t task)
+                    {
+                        Fill& f = fills[task / orifices];
+                        const std::size_t o = orifices - 1 - task % orifices;
+                        const bool longest = task == 0;
+                        const Real cpu0 = threadCpuSeconds();
+                        f.runs[o] = discharge(f.scene, 2 + o, kOrifices[o] * kD,
+                                              longest ? kLongDrain : kUntil, context);
+                        f.dischargeCpu[o] = threadCpuSeconds() - cpu0;
+                    });
+    for (Fill& f : fills)
+        fitFill(f);
 
     // The ensemble: per orifice the mean rate and its standard error over the fills; the law fitted
     // to W^(2/5) weighted by the inverse variances (sigma of W^(2/5) = 0.4 W^(-3/5) sigma_W).
@@ -400,7 +422,8 @@ CaseResult run(const CaseContext& context)
                   100 * drained, heightEarly / kD, heightLate / kD, 1e3 * early, 1e3 * late));
     std::string cpu;
     for (const Fill& f : fills)
-        cpu += formatted(" %.0f + %.0f", f.fillCpu, f.dischargeCpu);
+        cpu += formatted(" %.0f + %.0f", f.fillCpu,
+                         std::accumulate(f.dischargeCpu.begin(), f.dischargeCpu.end(), Real(0)));
     r.notes.push_back("CPU s per fill (fill + discharges):" + cpu);
 
     Series rateSeries{"beverloo_rate", {"D_over_d", "W", "W_error", "W_fit"}, {}};

@@ -42,6 +42,7 @@
 #include "support.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -302,10 +303,18 @@ CaseResult run(const CaseContext& context)
     constexpr Real kWindow = 3.0;              // [s] ~ 210 sqrt(d/g)
     constexpr Real kStopRun = 3.0;             // [s] at the angle below repose
     CaseResult r;
-    std::vector<ChuteRun> runs;
-    for (const Real degrees : {24.0, 25.0, 26.0})
-        runs.push_back(runChute(degrees, kTransient, kWindow, context));
-    const ChuteRun stop = runChute(17.0, kStopRun, 0.0, context);
+    // The three flowing inclinations and the one below repose, each a task (CaseContext::forEach).
+    constexpr std::array<Real, 4> kDegrees{24.0, 25.0, 26.0, 17.0};
+    std::vector<ChuteRun> runs(kDegrees.size());
+    context.forEach(kDegrees.size(),
+                    [&](std::size_t i)
+                    {
+                        const bool below = i + 1 == kDegrees.size();
+                        runs[i] = runChute(kDegrees[i], below ? kStopRun : kTransient, below ? 0.0 : kWindow,
+                                           context);
+                    });
+    const ChuteRun stop = std::move(runs.back());
+    runs.pop_back();
 
     { // the contact time of two flowing beads (m* = m/2) and of a bead on the frozen base (m* = m)
         const Real m = 2500 * 4.0 / 3.0 * kPi * kRadius * kRadius * kRadius, kn = 200, e = 0.88;

@@ -14,8 +14,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <future>
-#include <mutex>
 #include <sstream>
 
 namespace veridem::verify
@@ -28,38 +26,28 @@ using fdem::SlidingBlockSetup;
 
 const std::vector<double> kVelocities{0.5, 1, 2, 3, 4, 5, 6};
 
-/// Runs the sweep on two threads (independent worlds), longest runs first.
-std::vector<SlidingBlockResult> sweep(const std::vector<double>& velocities, double dt, bool progress)
+/// Runs the sweep over `velocities` at each time step of `dts`, every world a task
+/// (CaseContext::forEach), the longest (fastest block, smallest dt) first; results[d][i] is
+/// velocities[i] at dts[d].
+std::vector<std::vector<SlidingBlockResult>> sweep(const std::vector<double>& velocities,
+                                                   const std::vector<double>& dts, const CaseContext& context)
 {
-    std::vector<SlidingBlockResult> results(velocities.size());
-    std::vector<std::size_t> order(velocities.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-        order[i] = order.size() - 1 - i;
-    std::size_t next = 0;
-    std::mutex lock;
-    auto worker = [&]()
-    {
-        for (;;)
-        {
-            std::size_t i;
-            {
-                std::lock_guard<std::mutex> guard(lock);
-                if (next == order.size())
-                    return;
-                i = order[next++];
-            }
-            SlidingBlockSetup s;
-            s.velocity = velocities[i];
-            s.timeStep = dt;
-            results[i] = fdem::runSlidingBlock(s);
-            if (progress)
-                std::fprintf(stderr, "  sliding block v = %g m/s, dt = %g s: L = %.7f m (%.1f s)\n",
-                             velocities[i], dt, results[i].stopDistance, results[i].wallSeconds);
-        }
-    };
-    auto other = std::async(std::launch::async, worker);
-    worker();
-    other.get();
+    std::vector<std::vector<SlidingBlockResult>> results(dts.size(),
+                                                         std::vector<SlidingBlockResult>(velocities.size()));
+    context.forEach(dts.size() * velocities.size(),
+                    [&](std::size_t k)
+                    {
+                        const std::size_t d = k / velocities.size();
+                        const std::size_t i = velocities.size() - 1 - k % velocities.size();
+                        SlidingBlockSetup s;
+                        s.velocity = velocities[i];
+                        s.timeStep = dts[d];
+                        results[d][i] = fdem::runSlidingBlock(s);
+                        if (context.showProgress)
+                            std::fprintf(
+                                stderr, "  sliding block v = %g m/s, dt = %g s: L = %.7f m (%.1f s)\n",
+                                velocities[i], dts[d], results[d][i].stopDistance, results[d][i].wallSeconds);
+                    });
     return results;
 }
 
@@ -105,7 +93,7 @@ void addQuantities(CaseResult& result, const std::vector<double>& velocities,
 CaseResult runOne(double dt, const CaseContext& context)
 {
     CaseResult result;
-    const auto runs = sweep(kVelocities, dt, context.showProgress);
+    const auto runs = sweep(kVelocities, {dt}, context)[0];
     const std::string tag = dt < 5e-7 ? " dt1e-7" : " dt1e-6";
     addQuantities(result, kVelocities, runs, tag);
     Series s{"sliding_block" + std::string(dt < 5e-7 ? "_dt1e-7" : "_dt1e-6"), {"v", "L_theory", "L"}, {}};
@@ -128,8 +116,9 @@ VERIDEM_CASE({.name = "sliding_block_dt1e-7",
               .run = [](const CaseContext& c)
               {
                   CaseResult result;
-                  const auto fine = sweep(kVelocities, 1e-7, c.showProgress);
-                  const auto coarse = sweep(kVelocities, 1e-6, c.showProgress);
+                  const auto runs = sweep(kVelocities, {1e-7, 1e-6}, c); // dt sorted: longest first
+                  const auto& fine = runs[0];
+                  const auto& coarse = runs[1];
                   addQuantities(result, kVelocities, fine, " dt1e-7");
                   for (std::size_t i = 0; i < kVelocities.size(); ++i)
                       if (kVelocities[i] >= 1)
@@ -175,18 +164,30 @@ CaseResult meshConvergence(const CaseContext& context)
 {
     CaseResult result;
     Series s{"sliding_block_mesh", {"cells", "dt", "L_theory", "L"}, {}};
-    for (int n : {4, 8, 16})
+    const std::vector<int> cells{4, 8, 16};
+    std::vector<fdem::SlidingBlockSetup> setups(cells.size());
+    std::vector<SlidingBlockResult> runs(cells.size());
+    context.forEach(cells.size(),
+                    [&](std::size_t k)
+                    {
+                        const std::size_t i = cells.size() - 1 - k; // the finest (longest) first
+                        const int n = cells[i];
+                        fdem::SlidingBlockSetup& setup = setups[i];
+                        setup.velocity = 2;
+                        setup.cells = n;
+                        setup.timeStep = 1; // only to build the world for the limit
+                        const fdem::World probe = fdem::makeSlidingBlockWorld(setup);
+                        setup.timeStep = 0.4 * fdem::stableTimeStep(probe).limit;
+                        runs[i] = fdem::runSlidingBlock(setup);
+                        if (context.showProgress)
+                            std::fprintf(stderr, "  %d x %d: dt = %.3g s, L = %.7f m (%.1f s)\n", n, n,
+                                         setup.timeStep, runs[i].stopDistance, runs[i].wallSeconds);
+                    });
+    for (std::size_t i = 0; i < cells.size(); ++i)
     {
-        fdem::SlidingBlockSetup setup;
-        setup.velocity = 2;
-        setup.cells = n;
-        setup.timeStep = 1; // only to build the world for the limit
-        const fdem::World probe = fdem::makeSlidingBlockWorld(setup);
-        setup.timeStep = 0.4 * fdem::stableTimeStep(probe).limit;
-        const SlidingBlockResult r = fdem::runSlidingBlock(setup);
-        if (context.showProgress)
-            std::fprintf(stderr, "  %d x %d: dt = %.3g s, L = %.7f m (%.1f s)\n", n, n, setup.timeStep,
-                         r.stopDistance, r.wallSeconds);
+        const int n = cells[i];
+        const fdem::SlidingBlockSetup& setup = setups[i];
+        const SlidingBlockResult& r = runs[i];
         result.quantities.push_back(
             relativeQuantity("L(v=2, " + std::to_string(n) + "x" + std::to_string(n) + ")", "m", theory(2),
                              r.stopped ? r.stopDistance : NAN, 5e-3, "BENCHMARKS 1a: 0.5 % for every mesh"));
