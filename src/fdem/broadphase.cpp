@@ -6,22 +6,29 @@
 namespace veridem::fdem
 {
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>>
-findCandidatePairs(const std::vector<BoundingCircle>& circles, Real buffer)
+std::vector<std::pair<std::uint32_t, std::uint32_t>> findCandidatePairs(const std::vector<BoundingBox>& boxes,
+                                                                        Real buffer)
 {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    const std::size_t n = circles.size();
+    const std::size_t n = boxes.size();
     if (n < 2)
         return pairs;
-    Vec2 lo = circles[0].centre, hi = lo;
-    Real rMax = 0;
-    for (const auto& c : circles)
+    // Binned by centre: two boxes within the buffer have centres at most (the larger side + buffer)
+    // apart along each axis, so in the same or a neighbouring cell.
+    std::vector<Vec2> centre(n);
+    Real side = 0;
+    for (std::size_t i = 0; i < n; ++i)
     {
-        lo = {std::min(lo.x, c.centre.x), std::min(lo.y, c.centre.y)};
-        hi = {std::max(hi.x, c.centre.x), std::max(hi.y, c.centre.y)};
-        rMax = std::max(rMax, c.radius);
+        centre[i] = (boxes[i].lo + boxes[i].hi) / 2;
+        side = std::max({side, boxes[i].hi.x - boxes[i].lo.x, boxes[i].hi.y - boxes[i].lo.y});
     }
-    Real cell = 2 * rMax + buffer;
+    Vec2 lo = centre[0], hi = lo;
+    for (const Vec2& c : centre)
+    {
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y)};
+        hi = {std::max(hi.x, c.x), std::max(hi.y, c.y)};
+    }
+    Real cell = side + buffer;
     const Real maxCells = 4.0 * static_cast<Real>(n) + 1024;
     auto cellsAlong = [&](Real extent) { return static_cast<std::size_t>(std::floor(extent / cell)) + 1; };
     while (static_cast<Real>(cellsAlong(hi.x - lo.x)) * static_cast<Real>(cellsAlong(hi.y - lo.y)) > maxCells)
@@ -31,8 +38,8 @@ findCandidatePairs(const std::vector<BoundingCircle>& circles, Real buffer)
     std::vector<std::uint32_t> start(nx * ny + 1, 0);
     for (std::size_t i = 0; i < n; ++i)
     {
-        const auto ix = std::min(nx - 1, static_cast<std::size_t>((circles[i].centre.x - lo.x) / cell));
-        const auto iy = std::min(ny - 1, static_cast<std::size_t>((circles[i].centre.y - lo.y) / cell));
+        const auto ix = std::min(nx - 1, static_cast<std::size_t>((centre[i].x - lo.x) / cell));
+        const auto iy = std::min(ny - 1, static_cast<std::size_t>((centre[i].y - lo.y) / cell));
         cellOf[i] = iy * nx + ix;
         ++start[cellOf[i] + 1];
     }
@@ -46,11 +53,8 @@ findCandidatePairs(const std::vector<BoundingCircle>& circles, Real buffer)
     }
     const auto test = [&](std::uint32_t i, std::uint32_t j)
     {
-        const BoundingCircle &a = circles[i], &b = circles[j];
-        if (a.group == b.group || (!a.active && !b.active))
-            return;
-        const Real reach = a.radius + b.radius + buffer;
-        if (lengthSquared(a.centre - b.centre) <= reach * reach)
+        const BoundingBox &a = boxes[i], &b = boxes[j];
+        if (a.group != b.group && (a.active || b.active) && withinBuffer(a, b, buffer))
             pairs.emplace_back(std::min(i, j), std::max(i, j));
     };
     for (std::size_t iy = 0; iy < ny; ++iy)

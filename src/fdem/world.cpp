@@ -259,21 +259,21 @@ void World::detectContacts()
             buffer_ = 0.5 * hMin;
         }
     }
-    std::vector<BoundingCircle> circles(triangles_.size());
+    std::vector<BoundingBox> boxes(triangles_.size());
     for (std::size_t t = 0; t < triangles_.size(); ++t)
     {
         const auto& ids = triangles_.nodes[t];
-        const Vec2 c = (nodes_.position[ids[0]] + nodes_.position[ids[1]] + nodes_.position[ids[2]]) / 3;
-        Real r2 = 0;
-        bool active = false;
+        BoundingBox& box = boxes[t];
+        box = {nodes_.position[ids[0]], nodes_.position[ids[0]], triangles_.body[t], false};
         for (auto n : ids)
         {
-            r2 = std::max(r2, lengthSquared(nodes_.position[n] - c));
-            active = active || !nodes_.prescribed[n] || lengthSquared(nodes_.velocity[n]) > 0;
+            const Vec2 x = nodes_.position[n];
+            box.lo = {std::min(box.lo.x, x.x), std::min(box.lo.y, x.y)};
+            box.hi = {std::max(box.hi.x, x.x), std::max(box.hi.y, x.y)};
+            box.active = box.active || !nodes_.prescribed[n] || lengthSquared(nodes_.velocity[n]) > 0;
         }
-        circles[t] = {c, std::sqrt(r2), triangles_.body[t], active};
     }
-    contacts_.rebuild(findCandidatePairs(circles, buffer_));
+    contacts_.rebuild(findCandidatePairs(boxes, buffer_));
     positionAtDetection_.clear();
     for (const auto n : activeNodes_)
         positionAtDetection_.push_back(nodes_.position[n]);
