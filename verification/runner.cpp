@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 #include <thread>
 
@@ -195,11 +196,38 @@ int runCases(const RunRequest& request)
         return o;
     };
 
-    // Workers take the cases in registry order; this thread reports them in that order.
+    // Workers start the long cases (labelled bulk, then slow) first, the rest in registry order, so
+    // that no long run is left for the end; this thread reports them in registry order.
+    const auto rank = [](const Case& c)
+    {
+        const auto has = [&](const char* l)
+        { return std::find(c.labels.begin(), c.labels.end(), l) != c.labels.end(); };
+        return has("bulk") ? 0 : has("slow") ? 1 : 2;
+    };
+    std::vector<std::size_t> startOrder(chosen.size());
+    std::iota(startOrder.begin(), startOrder.end(), std::size_t(0));
+    std::stable_sort(startOrder.begin(), startOrder.end(),
+                     [&](std::size_t a, std::size_t b) { return rank(*chosen[a]) < rank(*chosen[b]); });
     std::mutex mutex;
     std::condition_variable finished;
     std::vector<char> done(chosen.size(), 0);
     std::atomic<std::size_t> next{0};
+    // Starts the next case not yet started and returns when it has finished; false if none is left.
+    const auto startNext = [&]
+    {
+        const std::size_t n = next++;
+        if (n >= startOrder.size())
+            return false;
+        const std::size_t k = startOrder[n];
+        Outcome o = runOne(k);
+        const std::lock_guard<std::mutex> lock(mutex);
+        outcomes[k] = std::move(o);
+        done[k] = 1;
+        finished.notify_all();
+        return true;
+    };
+    // A worker waiting for its case's runs on other workers starts another case meanwhile.
+    sharing.setIdleWork(startNext);
     const auto worker = [&]
     {
         // One thread per case's loops when cases run side by side: the cores are taken by the
@@ -207,18 +235,9 @@ int runCases(const RunRequest& request)
         const exec::ThreadCountOverride loops(jobs > 1 ? 1 : exec::threads());
         for (;;)
         {
-            if (sharing.runPending()) // another case's task first: that case is already running
+            if (sharing.runPending()) // another case's run first: that case is already running
                 continue;
-            const std::size_t k = next++;
-            if (k < chosen.size())
-            {
-                Outcome o = runOne(k);
-                const std::lock_guard<std::mutex> lock(mutex);
-                outcomes[k] = std::move(o);
-                done[k] = 1;
-                finished.notify_all();
-            }
-            else if (!sharing.waitForTask()) // no case left to start: help the running ones
+            if (!startNext() && !sharing.waitForTask()) // no case left: help the running ones
                 return;
         }
     };

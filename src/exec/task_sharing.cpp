@@ -47,6 +47,7 @@ void TaskSharing::forEach(std::size_t count, const std::function<void(std::size_
     std::unique_lock<std::mutex> lock(mutex_);
     open_.push_back(&group);
     changed_.notify_all();
+    bool idleDone = false; // the idle work said it had nothing left
     while (group.finished < group.count)
     {
         // Own tasks first (this thread's caller waits for them), then anyone's.
@@ -65,6 +66,12 @@ void TaskSharing::forEach(std::size_t count, const std::function<void(std::size_
         {
             lock.unlock();
             run(*chosen, index);
+            lock.lock();
+        }
+        else if (idle_ && !idleDone)
+        {
+            lock.unlock();
+            idleDone = !idle_();
             lock.lock();
         }
         else

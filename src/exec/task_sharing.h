@@ -13,6 +13,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <utility>
 
 namespace veridem::exec
 {
@@ -22,9 +23,15 @@ class TaskSharing
   public:
     /// Runs task(i) for every i in [0, count), on the calling thread and on the workers that call
     /// runPending() or waitForTask(); returns when all have returned. Tasks start in index order.
-    /// While its own tasks run elsewhere, the calling thread runs other threads' pending tasks. If
-    /// tasks throw, the rest still run and the first exception (by index) is rethrown here.
+    /// While its own tasks run elsewhere, the calling thread runs other threads' pending tasks,
+    /// else the idle work (setIdleWork), else sleeps. If tasks throw, the rest still run and the
+    /// first exception (by index) is rethrown here.
     void forEach(std::size_t count, const std::function<void(std::size_t)>& task);
+
+    /// What a thread waiting in forEach() does when no task is pending: `work` returns true if it
+    /// did something (the runner: starts and finishes a case not yet started), false if there is
+    /// nothing left to do. Thread-safe, called without the lock; set before any forEach().
+    void setIdleWork(std::function<bool()> work) { idle_ = std::move(work); }
 
     /// Runs one pending task of any forEach() if there is one; false if there was none.
     bool runPending();
@@ -52,6 +59,7 @@ class TaskSharing
     std::condition_variable changed_; // a task was offered, a task finished, or close()
     std::deque<Group*> open_;         // groups with tasks not yet started, oldest first
     bool closed_ = false;
+    std::function<bool()> idle_;
 };
 
 } // namespace veridem::exec

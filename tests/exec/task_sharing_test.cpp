@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -107,6 +108,35 @@ TEST(TaskSharing, FirstExceptionByIndexAfterAllTasksRan)
         EXPECT_STREQ(e.what(), "task 7");
     }
     EXPECT_EQ(ran.load(), 20);
+}
+
+TEST(TaskSharing, AWaitingCallerDoesTheIdleWork)
+{
+    TaskSharing sharing;
+    std::atomic<bool> idleRan{false}, timedOut{false};
+    sharing.setIdleWork(
+        [&]
+        {
+            const bool first = !idleRan.exchange(true);
+            return first; // one piece of idle work, then nothing left
+        });
+    Helpers helpers(sharing, 1);
+    sharing.forEach(2,
+                    [&](std::size_t i)
+                    {
+                        if (i == 0) // (the caller's; meanwhile the helper takes task 1)
+                        {
+                            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+                            return;
+                        }
+                        // Task 1 ends only once the caller, with nothing pending, did the idle work.
+                        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+                        while (!idleRan && std::chrono::steady_clock::now() < until)
+                            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                        timedOut = !idleRan;
+                    });
+    EXPECT_TRUE(idleRan.load());
+    EXPECT_FALSE(timedOut.load());
 }
 
 TEST(TaskSharing, WaitForTaskReturnsFalseAfterClose)

@@ -21,6 +21,7 @@
 #include "support.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -136,8 +137,13 @@ std::string format(const char* fmt, double a, double b, double c, double d)
 
 CaseResult run(const CaseContext& context)
 {
-    const DrumRun cylinder = runDrum("rotating_drum.toml", context);
-    const DrumRun mesh = runDrum("rotating_drum_mesh.toml", context);
+    std::array<DrumRun, 2> runs; // the two drums, each a task (CaseContext::forEach)
+    context.forEach(runs.size(),
+                    [&](std::size_t i) {
+                        runs[i] = runDrum(i == 0 ? "rotating_drum.toml" : "rotating_drum_mesh.toml", context);
+                    });
+    const DrumRun& cylinder = runs[0];
+    const DrumRun& mesh = runs[1];
     CaseResult r;
     r.quantities.push_back(absoluteQuantity("dynamic angle of repose, mesh - cylinder", "deg", 0,
                                             mean(mesh.angle) - mean(cylinder.angle), 1.0,
