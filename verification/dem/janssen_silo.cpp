@@ -55,7 +55,7 @@ dt = 2.4e-5               # s: tc/30 (tc 0.72 ms for kn = 100 N/m, 2 mm spheres)
 duration = 2              # s (the case steps the scene itself)
 gravity = [0, 0, -9.81]   # m/s^2
 flow_interval = 0.002     # s
-skin = 2e-4               # m
+skin = 4e-4               # m: fewer neighbour rebuilds while the stages fall
 
 [[material]]
 name = "beads"
