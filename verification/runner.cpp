@@ -166,8 +166,9 @@ int runCases(const RunRequest& request)
     };
     std::vector<Outcome> outcomes(chosen.size());
     // Workers (one per core, or --jobs) each run one case at a time; a case that splits its work
-    // into tasks (CaseContext::forEach) shares them with the workers that have no case left to
-    // start. On several ranks: none (the cases run on this thread, which alone makes MPI calls).
+    // into runs (CaseContext::forEach) shares them with the other workers, which take a pending run
+    // before they start a new case. On several ranks: none (the cases run on this thread, which
+    // alone makes MPI calls).
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const std::size_t jobs =
         onRanks ? 0 : (request.jobs > 0 ? static_cast<std::size_t>(request.jobs) : cores);
