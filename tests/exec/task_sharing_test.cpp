@@ -113,7 +113,7 @@ TEST(TaskSharing, FirstExceptionByIndexAfterAllTasksRan)
 TEST(TaskSharing, AWaitingCallerDoesTheIdleWork)
 {
     TaskSharing sharing;
-    std::atomic<bool> idleRan{false}, timedOut{false};
+    std::atomic<bool> idleRan{false}, secondStarted{false}, timedOut{false};
     sharing.setIdleWork(
         [&]
         {
@@ -121,19 +121,27 @@ TEST(TaskSharing, AWaitingCallerDoesTheIdleWork)
             return first; // one piece of idle work, then nothing left
         });
     Helpers helpers(sharing, 1);
+    const auto waitFor = [&](const std::atomic<bool>& flag)
+    {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        while (!flag && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (!flag)
+            timedOut = true;
+    };
+    // The caller takes task 0 (its own first, under the lock that offered them), and holds it until
+    // the helper has taken task 1; task 1 ends only once the caller, with nothing pending, has done
+    // the idle work.
     sharing.forEach(2,
                     [&](std::size_t i)
                     {
-                        if (i == 0) // (the caller's; meanwhile the helper takes task 1)
+                        if (i == 0)
+                            waitFor(secondStarted);
+                        else
                         {
-                            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-                            return;
+                            secondStarted = true;
+                            waitFor(idleRan);
                         }
-                        // Task 1 ends only once the caller, with nothing pending, did the idle work.
-                        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-                        while (!idleRan && std::chrono::steady_clock::now() < until)
-                            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-                        timedOut = !idleRan;
                     });
     EXPECT_TRUE(idleRan.load());
     EXPECT_FALSE(timedOut.load());
