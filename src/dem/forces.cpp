@@ -216,12 +216,41 @@ void mergeWallHealth(StepHealth& health, const ContactHealth* chunk, int chunks)
     foldHealth(health, chunk, chunks, health.touchingWalls);
 }
 
+void addExternalLoads(ParticleStore& particles, std::size_t begin, std::size_t end)
+{
+    if (!particles.hasExternalLoads()) [[likely]]
+        return;
+    for (std::size_t i = begin; i < end; ++i)
+    {
+        particles.force[i] = particles.force[i] + particles.externalForce[i];
+        particles.torque[i] = particles.torque[i] + particles.externalTorque[i];
+        particles.appliedExternalForce[i] = particles.externalForce[i];
+        particles.appliedExternalTorque[i] = particles.externalTorque[i];
+    }
+}
+
+void syncExternalLoads(ParticleStore& particles)
+{
+    if (!particles.hasExternalLoads())
+        return;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+    {
+        particles.force[i] =
+            particles.force[i] + (particles.externalForce[i] - particles.appliedExternalForce[i]);
+        particles.torque[i] =
+            particles.torque[i] + (particles.externalTorque[i] - particles.appliedExternalTorque[i]);
+        particles.appliedExternalForce[i] = particles.externalForce[i];
+        particles.appliedExternalTorque[i] = particles.externalTorque[i];
+    }
+}
+
 void computeForces(World& world, Real dt)
 {
     computePairForces(world, dt);
     const std::size_t n = world.particles.size();
     addCrossBlockForces(world, 0, n);
     const ContactHealth walls = computeWallForces(world, dt, 0, n);
+    addExternalLoads(world.particles, 0, n);
     mergeWallHealth(world.health, &walls, 1);
 }
 

@@ -16,6 +16,15 @@ namespace veridem::dem
 /// fused particle pass zeroes them after its last read), so they are not zeroed again.
 void computePairForces(World& world, Real dt, bool sumsAreZero = false);
 
+/// Adds the particles' external loads (ParticleStore::externalForce, externalTorque) of
+/// [begin, end) to their force and torque sums, if the store keeps them; else does nothing.
+void addExternalLoads(ParticleStore& particles, std::size_t begin, std::size_t end);
+
+/// Brings external loads changed since the last force evaluation into the force and torque rows
+/// (the next step's first half kick reads them), if the store keeps them. For a driver that
+/// changes them between steps (api::Simulation). O(N).
+void syncExternalLoads(ParticleStore& particles);
+
 /// Stage 4a, particles [begin, end): adds the incoming cross-block contacts to the force and
 /// torque stage 3 left, in slot order (bit-identical for any thread count).
 void addCrossBlockForces(World& world, std::size_t begin, std::size_t end);

@@ -54,6 +54,26 @@ struct ParticleStore
     // prepare() fills and every drift (integrate.h) rewrites with the new positions, so that the
     // pair stage's distance test loads a particle with one 32-byte load.
     std::vector<PaddedVec3> positionRadius;
+    // Optional loads added to each particle's contact sums every step: a force [N] and a torque
+    // [N m] set by a driver between steps (drag, fields; api::Simulation). Empty (the default):
+    // none, and the step runs exactly as without them. When present, they follow the rows through
+    // copyRow, appendRow, truncate and add like every array (each 0 for a new particle).
+    std::vector<Vec3> externalForce;
+    std::vector<Vec3> externalTorque;
+    // The external loads that the force and torque rows hold now (added at the last force
+    // evaluation), so that loads changed between steps can be brought into the rows before the
+    // next half kick (syncExternalLoads, forces.h).
+    std::vector<Vec3> appliedExternalForce;
+    std::vector<Vec3> appliedExternalTorque;
+    bool hasExternalLoads() const { return !externalForce.empty(); }
+    /// Sizes the external loads to the particles (zero) if they are not kept yet.
+    void keepExternalLoads()
+    {
+        externalForce.resize(size());
+        externalTorque.resize(size());
+        appliedExternalForce.resize(size());
+        appliedExternalTorque.resize(size());
+    }
 
     /// Refills positionRadius from position and radius (prepare(); after changing either outside
     /// a step).
@@ -102,6 +122,8 @@ struct ParticleStore
         id.push_back(static_cast<std::uint32_t>(id.size()));
         fixed.push_back(0);
         positionRadius.push_back(positionRadiusRow(position.size() - 1));
+        if (hasExternalLoads())
+            keepExternalLoads(); // (zero for the new row)
         return static_cast<std::uint32_t>(position.size() - 1);
     }
 
@@ -129,23 +151,41 @@ struct ParticleStore
         forEachArray([&](auto array) { (this->*array).reserve(n); });
     }
 
+    /// Calls f(&ParticleStore::array) for the optional arrays that are kept (the external loads).
+    template <class F> void forEachOptionalArray(F&& f) const
+    {
+        if (hasExternalLoads())
+        {
+            f(&ParticleStore::externalForce);
+            f(&ParticleStore::externalTorque);
+            f(&ParticleStore::appliedExternalForce);
+            f(&ParticleStore::appliedExternalTorque);
+        }
+    }
+
     /// Copies particle `from`'s row (every array, its force and torque rows included) over
     /// particle `to`'s.
     void copyRow(std::size_t from, std::size_t to)
     {
         forEachArray([&](auto array) { (this->*array)[to] = (this->*array)[from]; });
+        forEachOptionalArray([&](auto array) { (this->*array)[to] = (this->*array)[from]; });
     }
 
     /// Appends particle i of `other` (every array: its row as it is there).
     void appendRow(const ParticleStore& other, std::size_t i)
     {
         forEachArray([&](auto array) { (this->*array).push_back((other.*array)[i]); });
+        if (other.hasExternalLoads() || hasExternalLoads())
+            keepExternalLoads(); // (sized to the rows, this one included, zero where new)
+        if (other.hasExternalLoads())
+            forEachOptionalArray([&](auto array) { (this->*array).back() = (other.*array)[i]; });
     }
 
     /// Keeps the first n particles (n <= size()).
     void truncate(std::size_t n)
     {
         forEachArray([&](auto array) { (this->*array).resize(n); });
+        forEachOptionalArray([&](auto array) { (this->*array).resize(n); });
     }
 
     /// Removes particle i by moving the last particle into its place; the caller re-keys the

@@ -178,6 +178,7 @@ ContactHealth finishRange(World& world, Real dt, std::size_t begin, std::size_t 
             }
         addCrossBlockForces(world, s, e);
         const ContactHealth walls = computeWallForces(world, dt, s, e);
+        addExternalLoads(world.particles, s, e);
         health.touching += walls.touching;
         if (walls.found && walls.maxOverlapRatio > health.maxOverlapRatio) // first of the largest
             health = {walls.maxOverlapRatio, walls.worstParticle, true, health.touching};
@@ -249,6 +250,7 @@ Motion finishParticles(World& world, Real dt, bool lanes, bool driftNext)
     {
         addCrossBlockForces(world, 0, n);
         const ContactHealth walls = computeWallForces(world, dt, 0, n);
+        addExternalLoads(p, 0, n);
         mergeWallHealth(world.health, &walls, 1);
         world.health.finite = kick(p, world.gravity, dt, 0, n, lanes);
     }
@@ -334,6 +336,12 @@ void stepOneParticle(World& world, Real dt)
     const ContactHealth walls = wallContactsOf(world, dt, 0, s, force, torque);
     p.force[0] = force;
     p.torque[0] = torque;
+    if (p.hasExternalLoads()) [[unlikely]]
+    {
+        addExternalLoads(p, 0, 1);
+        force = p.force[0];
+        torque = p.torque[0];
+    }
     mergeWallHealth(world.health, &walls, 1);
     world.health.finite =
         kickOne(s.position, s.velocity, s.angularVelocity, force, torque, invMass, s.invInertia, gravity, dt);
