@@ -131,8 +131,8 @@ same_state(f"{out}/straight2d/checkpoint.bin", f"{out}/fresh2d/checkpoint.bin", 
 
 # ---- refusals ----
 other = f"{out}/other_scene.toml"
-with open(other, "w") as f:
-    f.write(open(scene3d).read() + "\n# the same scene with one more comment line\n")
+with open(other, "w") as f:  # the same scene with another duration
+    f.write(open(scene3d).read().replace("duration = 0.03 ", "duration = 0.04 "))
 
 
 def refused(scene, checkpoint, message, what):
@@ -144,6 +144,12 @@ def refused(scene, checkpoint, message, what):
 
 good = open(f"{out}/k337_split12.bin", "rb").read()
 refused(other, f"{out}/k337_split12.bin", "belongs to another scene", "other scene")
+# Comments and layout are not the scene: a copy with one more comment line restarts.
+commented = f"{out}/commented_scene.toml"
+with open(commented, "w") as f:
+    f.write("# a comment that was not there\n" + open(scene3d).read() + "\n# nor this one\n")
+run(commented, "commented", "--restart", f"{out}/k337_split12.bin")
+same_state(f"{out}/straight1/checkpoint.bin", f"{out}/commented/checkpoint.bin", "3D commented scene")
 refused(scene2d, f"{out}/k337_split12.bin", "is a checkpoint of a 3D DEM scene", "other engine")
 with open(f"{out}/version.bin", "wb") as f:
     f.write(good[:12] + struct.pack("<I", 99) + good[16:])

@@ -1,0 +1,220 @@
+// The state behind api::Simulation (simulation.h): the scene, its outputs and, on several MPI
+// ranks, this rank's part; internal to src/api (simulation.cpp steps it, simulation_access.cpp
+// reads and changes it between steps).
+#pragma once
+
+#include "api/simulation.h"
+#include "app/silenced_stream.h"
+#include "core/error.h"
+#include "dem/forces.h"
+#include "dem/particle_changes.h"
+#include "dist/rank_flow.h"
+#include "dist/rank_gather.h"
+#include "dist/rank_step.h"
+#include "dist/rank_sums.h"
+#include "io/contact_output.h"
+#include "io/dem_checkpoint.h"
+#include "io/dem_scene.h"
+#include "io/outlet_output.h"
+#include "io/particle_flow_keys.h"
+#include "io/particle_output.h"
+#include "io/region_output.h"
+#include "io/thermo_output.h"
+#include "io/toml_reader.h"
+#include "io/wall_output.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace veridem::api
+{
+
+struct Simulation::State
+{
+    std::string name;
+    SimulationOptions options;
+    io::DemScene scene;
+    std::uint64_t hash = 0;
+    bool severalRanks = false, root = true;
+    std::uint64_t totalSteps = 0, outputEvery = 1, checkpointEvery = 0;
+    std::uint64_t chunk = 1;        // steps per run, sized to ~10-50 ms of wall time
+    double particleSteps = 0;       // run by advance() on this rank
+    dem::EnergyLedger ledger;       // with `[output] energy = true`: world.observer
+    dem::EnergyLedger ledgerTotals; // on several ranks, the ranks' sum (the files read it)
+    std::optional<dist::RankStep> rankStep;
+    // The files (the first rank only; none without an output directory)
+    std::optional<io::ParticleRecorder> recorder;
+    std::optional<io::ThermoRecorder> thermo;
+    std::optional<io::ContactRecorder> contacts;
+    std::optional<io::RegionRecorder> region;
+    std::optional<io::WallLoadRecorder> walls;
+    std::optional<io::OutletRecorder> outlets;
+    bool closed = false;
+
+    dem::World& world() { return scene.world; }
+    bool files() const { return !options.outDir.empty(); }
+    bool wallLoads() const { return !scene.world.walls.empty(); }
+    dem::EnergyLedgerState* ledgerState() { return scene.measurements.energy ? &ledger.state : nullptr; }
+
+    /// The number of output files in a checkpoint: particles.csv, thermo.csv, region.csv (if
+    /// measured), walls.csv (if there are walls), outlets.csv (if there are outlets), in order.
+    std::size_t outputFiles() const
+    {
+        if (!files())
+            return 0;
+        return 2 + std::size_t(scene.measurements.region) + std::size_t(wallLoads()) +
+               std::size_t(!scene.flow.outlets.empty());
+    }
+
+    void openOutputs(const io::CheckpointOutputs* saved)
+    {
+        if (!root || !files())
+            return;
+        std::optional<io::ParticleRecorder::Resume> resume;
+        std::optional<std::uint64_t> thermoBytes, regionBytes, wallBytes, outletBytes;
+        if (saved)
+        {
+            resume = io::ParticleRecorder::Resume{saved->frameTimes, saved->fileBytes[0]};
+            thermoBytes = saved->fileBytes[1];
+            if (scene.measurements.region)
+                regionBytes = saved->fileBytes[2];
+            if (wallLoads())
+                wallBytes = saved->fileBytes[2 + std::size_t(scene.measurements.region)];
+            if (!scene.flow.outlets.empty())
+                outletBytes = saved->fileBytes.back();
+        }
+        const io::MeasurementOptions& measure = scene.measurements;
+        const std::filesystem::path& dir = options.outDir;
+        recorder.emplace(dir, scene.writeVtk, scene.vtkFormat, resume ? &*resume : nullptr);
+        thermo.emplace(dir, thermoBytes, measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
+        if (measure.contacts)
+            contacts.emplace(dir, scene.vtkFormat, resume ? resume->frameTimes : std::vector<double>{});
+        if (measure.region)
+            region.emplace(dir, measure.regionMin, measure.regionMax, regionBytes);
+        if (wallLoads())
+            walls.emplace(dir, wallBytes);
+        if (!scene.flow.outlets.empty())
+            outlets.emplace(dir, outletBytes);
+    }
+
+    /// The outlets' totals: this process's, or on several ranks their sum (on the first). Collective.
+    std::vector<dem::Outlet> outletState()
+    {
+        return rankStep ? dist::outletTotals(scene.flow.outlets, *options.ranks) : scene.flow.outlets;
+    }
+    /// The ledger's amounts summed over the ranks, on the first (collective).
+    void sumLedger()
+    {
+        if (rankStep && scene.measurements.energy)
+            ledgerTotals.state = dist::ledgerTotals(ledger.state, *options.ranks);
+    }
+
+    void recordOutputs()
+    {
+        if (!files())
+            return;
+        const std::vector<dem::Outlet> outletTotals =
+            outlets || rankStep ? outletState() : scene.flow.outlets;
+        sumLedger();
+        std::optional<dem::World> gathered;
+        if (rankStep && !(gathered = dist::gatherWorld(world(), *rankStep)))
+            return; // (not the first rank)
+        const dem::World& w = gathered ? *gathered : world();
+        recorder->record(w);
+        const std::vector<dem::ContactRecord> now = dem::evaluateContacts(w, 0.0);
+        if (gathered) // the step's contact counts, as one process counts them
+        {
+            gathered->health.touchingPairs = gathered->health.touchingWalls = 0;
+            for (const dem::ContactRecord& c : now)
+                ++(c.wall ? gathered->health.touchingWalls : gathered->health.touchingPairs);
+        }
+        thermo->record(w, now);
+        if (contacts)
+            contacts->record(w, now);
+        if (region)
+            region->record(w, now);
+        if (walls)
+            walls->record(w);
+        if (outlets)
+            outlets->record(w.time, outletTotals);
+    }
+
+    void writeCheckpoint(const std::filesystem::path& path)
+    {
+        dem::ParticleFlow saved = scene.flow; // (on several ranks, with the outlets' totals)
+        saved.outlets = outletState();
+        sumLedger();
+        std::optional<dem::World> gathered;
+        if (rankStep && !(gathered = dist::gatherWorld(world(), *rankStep)))
+            return;
+        io::CheckpointOutputs outputs;
+        if (recorder)
+        {
+            outputs.frameTimes = recorder->frameTimes();
+            outputs.fileBytes = {recorder->csvBytes(), thermo->size()};
+            if (region)
+                outputs.fileBytes.push_back(region->size());
+            if (walls)
+                outputs.fileBytes.push_back(walls->size());
+            if (outlets)
+                outputs.fileBytes.push_back(outlets->size());
+        }
+        io::writeDemCheckpoint(path, gathered ? *gathered : world(), hash, outputs,
+                               ledgerState() && rankStep ? &ledgerTotals.state : ledgerState(), &saved);
+    }
+
+    void closeOutputs()
+    {
+        if (closed || !root)
+            return;
+        closed = true;
+        if (!recorder)
+            return;
+        recorder->close();
+        thermo->close();
+        if (region)
+            region->close();
+        if (walls)
+            walls->close();
+        if (outlets)
+            outlets->close();
+    }
+
+    void applyFlow()
+    {
+        if (rankStep)
+            dist::applyFlow(scene.flow, world(), *rankStep, scene.dt);
+        else
+            scene.flow.apply(world(), scene.dt);
+    }
+
+    /// Throws BlowUp for the last step's bad health (particles named by their stable id, as in the
+    /// output; on several ranks the health is every rank's, so all stop here and the first
+    /// reports), after flushing the outputs written so far.
+    [[noreturn]] void blowUp()
+    {
+        dem::World& w = world();
+        const auto id = [&](std::uint32_t i) { return i < w.particles.size() ? w.particles.id[i] : i; };
+        const std::uint32_t failed =
+            rankStep ? rankStep->failedParticleId(w)
+                     : id(w.health.finite ? w.health.worstParticle : w.health.firstNonFinite);
+        std::ostringstream m;
+        m << "step " << w.stepCount << " (t = " << w.time << " s), particle " << failed;
+        if (!w.health.finite)
+            m << ": position or velocity is not finite (NaN or infinity)";
+        else
+            m << ": overlap is " << w.health.maxOverlapRatio
+              << " of the radius (limit max_overlap_fraction = " << scene.maxOverlapFraction
+              << "): the time step is too large for the stiffness or the particles are too fast";
+        if (recorder)
+            m << "; the " << recorder->framesWritten() << " outputs written so far are in "
+              << options.outDir.string();
+        closeOutputs();
+        throw BlowUp(m.str(), rankStep.has_value());
+    }
+};
+
+} // namespace veridem::api
