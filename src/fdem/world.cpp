@@ -96,6 +96,7 @@ std::uint32_t World::addMaterial(const Material& m, const std::string& name)
         bad("viscosity must be >= 0 Pa s (got " + std::to_string(m.viscosity) + ")");
     materials_.push_back(m);
     constants_.push_back(elasticConstants(m));
+    laws_.push_back(checkedCohesiveConstants(m.fracture, "material '" + name + "'"));
     return static_cast<std::uint32_t>(materials_.size() - 1);
 }
 
@@ -103,11 +104,16 @@ std::uint32_t World::addBody(const BodyDefinition& body)
 {
     if (body.material >= materials_.size())
         throw InputError("body '" + body.name + "': unknown material index " + std::to_string(body.material));
-    const TriangleMesh mesh = validatedMesh(body.mesh, "body '" + body.name + "'");
+    TriangleMesh mesh = validatedMesh(body.mesh, "body '" + body.name + "'");
+    const SplitMesh split = body.cracks ? splitForCracks(body, mesh) : SplitMesh{}; // world_fracture.cpp
+    if (body.cracks)
+        mesh = split.mesh;
     const auto id = static_cast<std::uint32_t>(bodyNames_.size());
     bodyNames_.push_back(body.name);
     bodyFixed_.push_back(body.fixed ? 1 : 0);
+    bodyCracks_.push_back(body.cracks ? 1 : 0);
     const auto first = static_cast<std::uint32_t>(nodes_.size());
+    const auto firstTriangle = static_cast<std::uint32_t>(triangles_.size());
     const Real rho = materials_[body.material].density;
     for (const Vec2& p : mesh.points)
     {
@@ -139,6 +145,9 @@ std::uint32_t World::addBody(const BodyDefinition& body)
         nodes_.inverseMass[n] = nodes_.prescribed[n] ? 0 : 1 / nodes_.mass[n];
     if (nodes_.size() >= (1u << 31) || triangles_.size() >= (1u << 31))
         throw InputError("too many nodes or triangles");
+    triangleJoints_.resize(triangles_.size(), {~0u, ~0u, ~0u});
+    if (body.cracks)
+        insertJoints(body, split, first, firstTriangle);
     contactsValid_ = false;
     listsValid_ = false;
     return id;
@@ -198,6 +207,8 @@ void World::step()
     if (!listsValid_)
         refreshActiveLists();
     computeElementForces();
+    if (!joints_.nodes.empty())
+        computeJointForces();
     if (needsDetection())
         detectContacts();
     computeContactForces();
@@ -264,7 +275,10 @@ void World::detectContacts()
     {
         const auto& ids = triangles_.nodes[t];
         BoundingBox& box = boxes[t];
-        box = {nodes_.position[ids[0]], nodes_.position[ids[0]], triangles_.body[t], false};
+        // Triangles of a body that cracks are each their own group (self-contact); see jointedOrAdjacent.
+        const std::uint32_t group =
+            bodyCracks_[triangles_.body[t]] ? (1u << 31) | static_cast<std::uint32_t>(t) : triangles_.body[t];
+        box = {nodes_.position[ids[0]], nodes_.position[ids[0]], group, false};
         for (auto n : ids)
         {
             const Vec2 x = nodes_.position[n];
@@ -273,7 +287,9 @@ void World::detectContacts()
             box.active = box.active || !nodes_.prescribed[n] || lengthSquared(nodes_.velocity[n]) > 0;
         }
     }
-    contacts_.rebuild(findCandidatePairs(boxes, buffer_));
+    auto pairs = findCandidatePairs(boxes, buffer_);
+    removeTiedPairs(pairs);
+    contacts_.rebuild(pairs);
     positionAtDetection_.clear();
     for (const auto n : activeNodes_)
         positionAtDetection_.push_back(nodes_.position[n]);
