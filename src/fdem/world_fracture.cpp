@@ -4,7 +4,8 @@
 // Inside a body that cracks every triangle pair may touch (self-contact, also between fragments),
 // except two triangles that share a node (the continuum) or that an intact joint ties (the joint
 // carries their tension, shear and compression). When a joint breaks the candidate list is rebuilt
-// at the next step, so its two free edges meet through the potential contact with friction.
+// in the same step (the joints come before the detection), so its two free edges meet through the
+// potential contact with friction from then on.
 #include "core/error.h"
 #include "fdem/elements/cst.h"
 #include "fdem/world.h"
@@ -132,7 +133,7 @@ void World::computeJointForces()
         energyReleased_ += joints_.work[j];
     }
     if (!broken.empty())
-        contactsValid_ = false; // the two free edges join the candidate list at the next step
+        contactsValid_ = false; // the two free edges join the candidate list in this step's detection
 }
 
 bool World::jointedOrAdjacent(std::uint32_t a, std::uint32_t b) const

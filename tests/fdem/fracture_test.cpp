@@ -192,6 +192,71 @@ TEST(Joints, ABodyThatCracksMovesRigidlyWithoutForcesAndHasAJointTimeStep)
     EXPECT_EQ(limit.limit, std::min({limit.element, limit.contact, limit.joint}));
 }
 
+TEST(Joints, ABrokenJointsFacesMeetThroughTheContact)
+{
+    // Two cells with one joint on the shared edge; every node prescribed. The right cell moves away
+    // until the joint breaks, then comes back 1 um past closing: the crack faces must push it back
+    // (the potential contact), and the couple of the two triangles exists only after the break.
+    WorldSettings s;
+    s.gravity = {0, 0};
+    s.timeStep = 1e-6;
+    s.contact.normalPenalty = 1e10;
+    World w(s);
+    Material m{2500, 1e10, 0, 0, StressLaw::Linear, PlaneModel::Stress};
+    m.fracture = law(SofteningCurve::Linear).p;
+    w.addMaterial(m, "rock");
+    BodyDefinition b{"pair", meshRectangle({0, 0}, {0.02, 0.01}, 2, 1, DiagonalPattern::Right), 0};
+    b.cracks = true;
+    b.crackRegion = true;
+    b.crackMin = {0.01 - 1e-9, -1e-9};
+    b.crackMax = {0.01 + 1e-9, 0.01 + 1e-9};
+    w.addBody(b);
+    ASSERT_EQ(w.joints().size(), 1u);
+    const auto tied = w.joints().triangles[0];
+    const auto coupled = [&]()
+    {
+        for (const Couple& c : w.couples())
+            if ((c.first == tied[0] && c.second == tied[1]) || (c.first == tied[1] && c.second == tied[0]))
+                return true;
+        return false;
+    };
+    std::vector<std::uint32_t> moving;
+    const auto prescribe = [&](Real v)
+    {
+        moving.clear();
+        for (std::uint32_t t = 0; t < w.triangles().size(); ++t)
+        {
+            const auto& ids = w.triangles().nodes[t];
+            const Real cx = (w.nodes().referencePosition[ids[0]].x + w.nodes().referencePosition[ids[1]].x +
+                             w.nodes().referencePosition[ids[2]].x) /
+                            3;
+            for (auto n : ids)
+            {
+                w.prescribeNode(n, {cx > 0.01 ? v : 0, 0});
+                if (cx > 0.01)
+                    moving.push_back(n);
+            }
+        }
+    };
+    prescribe(0.01); // 1e-8 m per step; o_c = 3.4e-5 m
+    int steps = 0;
+    while (w.fractureState().broken == 0 && steps < 10000)
+    {
+        w.step();
+        ++steps;
+        EXPECT_EQ(coupled(), w.fractureState().broken == 1); // listed from the breaking step on
+    }
+    ASSERT_EQ(w.fractureState().broken, 1u);
+    prescribe(-0.01);
+    for (int i = 0; i < steps + 100; ++i) // back to 1e-6 m of overlap
+        w.step();
+    EXPECT_TRUE(coupled());
+    Real fx = 0;
+    for (auto n : moving)
+        fx += w.nodes().force[n].x;
+    EXPECT_GT(fx, 0); // the contact pushes the right cell back out
+}
+
 const char* kCrackScene = R"(
 [simulation]
 type = "fdem2d"
