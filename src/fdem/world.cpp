@@ -1,7 +1,8 @@
 // Design note: one step of the 2D FEM/DEM solver, read top to bottom in World::step().
 //
 //  1. computeElementForces  CST internal forces (elements/cst.h), a pure function per triangle of its
-//                           reference inverse and current nodes, scattered to the nodes, plus gravity.
+//                           reference inverse and current nodes, scattered to the nodes, plus gravity
+//                           (world_elements.cpp); then the joints of bodies that crack (world_fracture.cpp).
 //  2. detectContacts        only when the Verlet-skin criterion says the candidate list may be stale
 //                           (broadphase.h); history is carried by persistent keys (contact_list.h).
 //  3. computeContactForces  per couple, both roles: potential contact (contact/potential.h) gives the
@@ -215,35 +216,6 @@ void World::step()
     integrate();
     time_ += settings_.timeStep;
     ++steps_;
-}
-
-void World::computeElementForces()
-{
-    // Nodes and triangles that are prescribed at rest get no forces (they would be discarded).
-    const Vec2 g = settings_.gravity;
-    for (const auto n : activeNodes_)
-        nodes_.force[n] = nodes_.mass[n] * g;
-    for (const auto t : activeTriangles_)
-    {
-        const auto& ids = triangles_.nodes[t];
-        const std::array<Vec2, 3> x{nodes_.position[ids[0]], nodes_.position[ids[1]],
-                                    nodes_.position[ids[2]]};
-        const std::array<Vec2, 3> v{nodes_.velocity[ids[0]], nodes_.velocity[ids[1]],
-                                    nodes_.velocity[ids[2]]};
-        const CstResult r =
-            cstInternalForces(x, v, triangles_.referenceInverse[t], constants_[triangles_.material[t]]);
-        if (!(r.jacobian > 0))
-        {
-            std::ostringstream s;
-            s << "step " << steps_ << " (t = " << time_ << " s): triangle " << t << " of body '"
-              << bodyNames_[triangles_.body[t]] << "' is inverted (J = " << r.jacobian
-              << "); reduce the time step or raise the contact penalty";
-            throw SimulationError(s.str());
-        }
-        triangles_.stress[t] = r.stress;
-        for (int i = 0; i < 3; ++i)
-            nodes_.force[ids[i]] += r.force[i];
-    }
 }
 
 bool World::needsDetection() const

@@ -167,6 +167,8 @@ class World
     std::vector<CohesiveConstants> laws_;                      // per material
     std::vector<std::uint8_t> bodyCracks_;                     // per body
     std::vector<std::array<std::uint32_t, 3>> triangleJoints_; // joint ids per triangle (~0u: none)
+    std::vector<std::array<Vec2, 3>> elementForce_; // scratch of the element loop (world_elements.cpp)
+    std::vector<Real> elementJacobian_;             // scratch of the element loop
     std::size_t brokenJoints_ = 0;
     Real energyReleased_ = 0;
 };

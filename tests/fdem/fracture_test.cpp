@@ -1,5 +1,6 @@
 // The cohesive law and the joint elements (fracture/cohesive_law.h, fracture/joints.h).
 #include "core/error.h"
+#include "exec/thread_pool.h"
 #include "fdem/fracture/cohesive_law.h"
 #include "fdem/fracture/joints.h"
 #include "fdem/mesher.h"
@@ -255,6 +256,42 @@ TEST(Joints, ABrokenJointsFacesMeetThroughTheContact)
     for (auto n : moving)
         fx += w.nodes().force[n].x;
     EXPECT_GT(fx, 0); // the contact pushes the right cell back out
+}
+
+TEST(Joints, TheSameBitsOnOneAndTwoThreads)
+{
+    // A 40 x 40 block (3200 triangles, 4720 joints: several chunks of the element and joint loops)
+    // whose right edge is pulled at 5 m/s: the wave (rho c v = 25 MPa > f_t) breaks joints at once.
+    const auto run = [](int threads)
+    {
+        exec::ThreadCountOverride override(threads);
+        WorldSettings s;
+        s.gravity = {0, 0};
+        s.timeStep = 5e-8;
+        s.contact.normalPenalty = 1e10;
+        World w(s);
+        Material m{2500, 1e10, 0.2, 0, StressLaw::FiniteStrain, PlaneModel::Strain};
+        m.fracture = law(SofteningCurve::Munjiza).p;
+        w.addMaterial(m, "rock");
+        BodyDefinition b{"block", meshRectangle({0, 0}, {0.1, 0.1}, 40, 40), 0};
+        b.cracks = true;
+        w.addBody(b);
+        w.prescribeNodes(0, {-1, -1}, {1e-9, 1}, {0, 0});
+        w.prescribeNodes(0, {0.1 - 1e-9, -1}, {1, 1}, {5, 0});
+        for (int i = 0; i < 300; ++i)
+            w.step();
+        return w;
+    };
+    const World one = run(1), two = run(2);
+    EXPECT_GT(one.fractureState().broken, 0u);
+    EXPECT_EQ(one.fractureState().broken, two.fractureState().broken);
+    EXPECT_EQ(one.fractureState().jointWork, two.fractureState().jointWork);
+    ASSERT_EQ(one.nodes().size(), two.nodes().size());
+    for (std::size_t n = 0; n < one.nodes().size(); ++n)
+    {
+        ASSERT_EQ(one.nodes().position[n], two.nodes().position[n]) << n;
+        ASSERT_EQ(one.nodes().velocity[n], two.nodes().velocity[n]) << n;
+    }
 }
 
 const char* kCrackScene = R"(

@@ -1,6 +1,7 @@
 #include "fdem/fracture/joints.h"
 
 #include "core/error.h"
+#include "exec/thread_pool.h"
 
 #include <algorithm>
 #include <cmath>
@@ -101,49 +102,88 @@ SplitMesh splitForJoints(const TriangleMesh& mesh, const std::function<bool(Vec2
     return out;
 }
 
+namespace
+{
+
+/// Updates joint j's state from the positions and returns its end forces on a0 and a1 [N/m] (the
+/// b nodes get the opposite); sets its broken flag when an end reaches D = 1. Touches joint j only.
+std::array<Vec2, 2> evaluateJoint(JointStore& joints, std::uint32_t j, const std::vector<Vec2>& position,
+                                  const std::vector<CohesiveConstants>& laws, Real time)
+{
+    const auto& id = joints.nodes[j];
+    const Vec2 xa0 = position[id[0]], xa1 = position[id[1]], xb0 = position[id[2]], xb1 = position[id[3]];
+    const Vec2 axis = 0.5 * (xa1 + xb1 - xa0 - xb0);
+    const Vec2 t = axis / length(axis);
+    const Vec2 n{t.y, -t.x};
+    const CohesiveConstants& law = laws[joints.material[j]];
+    const Real h = joints.length[j];
+    bool broken = false;
+    Real work = 0;
+    std::array<Vec2, 2> f{};
+    for (int k = 0; k < 2; ++k)
+    {
+        const Vec2 jump = k == 0 ? xb0 - xa0 : xb1 - xa1;
+        const Real o = dot(jump, n), s = dot(jump, t);
+        const CohesiveResult r = cohesiveTraction(o, s, h, joints.damage[j][k], law);
+        work += 0.5 * h * 0.5 *
+                ((r.normal + joints.normalTraction[j][k]) * (o - joints.opening[j][k]) +
+                 (r.tangential + joints.shearTraction[j][k]) * (s - joints.slip[j][k]));
+        joints.damage[j][k] = r.damage;
+        joints.opening[j][k] = o;
+        joints.slip[j][k] = s;
+        joints.normalTraction[j][k] = r.normal;
+        joints.shearTraction[j][k] = r.tangential;
+        f[k] = 0.5 * h * (r.normal * n + r.tangential * t);
+        broken = broken || r.damage >= 1;
+    }
+    joints.work[j] += work;
+    if (broken)
+    {
+        joints.broken[j] = 1;
+        joints.brokenAt[j] = time;
+    }
+    return f;
+}
+
+} // namespace
+
 std::vector<std::uint32_t> addJointForces(JointStore& joints, const std::vector<Vec2>& position,
                                           std::vector<Vec2>& force,
                                           const std::vector<CohesiveConstants>& laws, Real time)
 {
+    // Phase 1 on the thread pool: each joint's state and end forces (no joint touches another's data).
+    // Phase 2 serial, in joint order: the scatter to the nodes, so the sums and hence the bits are the
+    // same on any thread count.
+    const std::size_t count = joints.size();
+    joints.endForce.resize(count);
+    joints.event.assign(count, 0);
+    constexpr std::size_t kChunk = 1024;
+    const int chunks = static_cast<int>((count + kChunk - 1) / kChunk);
+    exec::run(chunks,
+              [&](int c)
+              {
+                  const std::size_t end = std::min(count, (static_cast<std::size_t>(c) + 1) * kChunk);
+                  for (std::size_t j = static_cast<std::size_t>(c) * kChunk; j < end; ++j)
+                  {
+                      if (joints.broken[j])
+                          continue;
+                      joints.endForce[j] =
+                          evaluateJoint(joints, static_cast<std::uint32_t>(j), position, laws, time);
+                      joints.event[j] = joints.broken[j] ? 2 : 1; // 2: broke in this step
+                  }
+              });
     std::vector<std::uint32_t> newlyBroken;
-    for (std::uint32_t j = 0; j < joints.size(); ++j)
+    for (std::uint32_t j = 0; j < count; ++j)
     {
-        if (joints.broken[j])
+        if (joints.event[j] == 2)
+        {
+            newlyBroken.push_back(j); // a broken joint carries nothing (its last tractions are ~0)
+            continue;
+        }
+        if (joints.event[j] != 1)
             continue;
         const auto& id = joints.nodes[j];
-        const Vec2 xa0 = position[id[0]], xa1 = position[id[1]], xb0 = position[id[2]], xb1 = position[id[3]];
-        const Vec2 axis = 0.5 * (xa1 + xb1 - xa0 - xb0);
-        const Vec2 t = axis / length(axis);
-        const Vec2 n{t.y, -t.x};
-        const CohesiveConstants& law = laws[joints.material[j]];
-        const Real h = joints.length[j];
-        bool broken = false;
-        Real work = 0;
-        std::array<Vec2, 2> f{};
-        for (int k = 0; k < 2; ++k)
-        {
-            const Vec2 jump = k == 0 ? xb0 - xa0 : xb1 - xa1;
-            const Real o = dot(jump, n), s = dot(jump, t);
-            const CohesiveResult r = cohesiveTraction(o, s, h, joints.damage[j][k], law);
-            work += 0.5 * h * 0.5 *
-                    ((r.normal + joints.normalTraction[j][k]) * (o - joints.opening[j][k]) +
-                     (r.tangential + joints.shearTraction[j][k]) * (s - joints.slip[j][k]));
-            joints.damage[j][k] = r.damage;
-            joints.opening[j][k] = o;
-            joints.slip[j][k] = s;
-            joints.normalTraction[j][k] = r.normal;
-            joints.shearTraction[j][k] = r.tangential;
-            f[k] = 0.5 * h * (r.normal * n + r.tangential * t);
-            broken = broken || r.damage >= 1;
-        }
-        joints.work[j] += work;
-        if (broken)
-        {
-            joints.broken[j] = 1;
-            joints.brokenAt[j] = time;
-            newlyBroken.push_back(j);
-            continue; // a broken joint carries nothing (its last tractions are zero or nearly so)
-        }
+        const auto& f = joints.endForce[j];
         force[id[0]] += f[0];
         force[id[2]] -= f[0];
         force[id[1]] += f[1];

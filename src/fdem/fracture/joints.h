@@ -54,12 +54,15 @@ struct JointStore
     std::vector<Real> work;     ///< work done on the joint since t = 0 (trapezoidal) [J/m]
     std::vector<Real> brokenAt; ///< time of breaking [s]; NaN while intact
     std::vector<std::uint8_t> broken;
+    std::vector<std::array<Vec2, 2>> endForce; ///< scratch of the step: forces on a0, a1 [N/m]
+    std::vector<std::uint8_t> event;           ///< scratch of the step: 1 evaluated, 2 broke
 
     std::size_t size() const { return nodes.size(); }
 };
 
-/// Joint forces of one step, added to `force` [N/m]. Returns the joints broken in this step (their
-/// brokenAt is set to `time`).
+/// Joint forces of one step, added to `force` [N/m], the joints evaluated on the thread pool and
+/// scattered in joint order (the same bits on any thread count). Returns the joints broken in this
+/// step (their brokenAt is set to `time`).
 std::vector<std::uint32_t> addJointForces(JointStore& joints, const std::vector<Vec2>& position,
                                           std::vector<Vec2>& force,
                                           const std::vector<CohesiveConstants>& laws, Real time);
