@@ -35,6 +35,20 @@ struct CheckpointAccess
         out.value("buff", w.buffer_);
         out.array("pDet", w.positionAtDetection_);
         out.array("cpls", w.contacts_.couples());
+        if (!w.joints_.nodes.empty()) // joints come from the scene: present in both or in neither
+        {
+            const JointStore& j = w.joints_;
+            out.array("jDam", j.damage);
+            out.array("jOpn", j.opening);
+            out.array("jSlp", j.slip);
+            out.array("jSgN", j.normalTraction);
+            out.array("jSgT", j.shearTraction);
+            out.array("jWrk", j.work);
+            out.array("jBrT", j.brokenAt);
+            out.array("jBrk", j.broken);
+            out.value("jNBr", std::uint64_t(w.brokenJoints_));
+            out.value("jERl", w.energyReleased_);
+        }
     }
 
     static void read(io::CheckpointReader& in, World& w)
@@ -64,6 +78,21 @@ struct CheckpointAccess
         in.value("buff", w.buffer_);
         in.array("pDet", w.positionAtDetection_);
         in.array("cpls", w.contacts_.couples());
+        if (!w.joints_.nodes.empty())
+        {
+            JointStore& j = w.joints_;
+            const std::size_t n = j.size();
+            sized(in, "jDam", j.damage, n);
+            sized(in, "jOpn", j.opening, n);
+            sized(in, "jSlp", j.slip, n);
+            sized(in, "jSgN", j.normalTraction, n);
+            sized(in, "jSgT", j.shearTraction, n);
+            sized(in, "jWrk", j.work, n);
+            sized(in, "jBrT", j.brokenAt, n);
+            sized(in, "jBrk", j.broken, n);
+            w.brokenJoints_ = static_cast<std::size_t>(in.value<std::uint64_t>("jNBr"));
+            in.value("jERl", w.energyReleased_);
+        }
         bool ok = w.positionAtDetection_.size() == w.activeNodes_.size() || !w.contactsValid_;
         for (const auto n : w.activeNodes_)
             ok = ok && n < nodes;

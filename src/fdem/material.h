@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "fdem/fracture/cohesive_law.h"
 
 #include <cmath>
 #include <cstdint>
@@ -35,6 +36,7 @@ struct Material
     Real viscosity = 0;     ///< eta_v of the viscous stress eta_v D [Pa s]
     StressLaw law = StressLaw::FiniteStrain;
     PlaneModel plane = PlaneModel::Strain;
+    FractureParameters fracture{}; ///< joint law of the bodies that crack (fracture/cohesive_law.h)
 };
 
 /// Constants the element kernel needs, computed once per material.

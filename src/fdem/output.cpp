@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "fdem/output_thermo.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace veridem::fdem
@@ -12,13 +13,14 @@ void writeVtu(const World& world, const std::filesystem::path& file, io::VtkForm
 {
     const NodeStore& nodes = world.nodes();
     const TriangleStore& tris = world.triangles();
-    const std::size_t n = nodes.size(), t = tris.size();
+    const JointStore& joints = world.joints();
+    const std::size_t n = nodes.size(), t = tris.size(), j = joints.size();
     io::AtomicFile atomic(file);
     std::ostream& out = atomic.stream();
     io::VtkXmlArrays arrays(format);
     out << arrays.vtkFileOpening("UnstructuredGrid") << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n
-        << "\" NumberOfCells=\"" << t << "\">\n<Points>\n";
-    std::vector<double> flat(std::max(3 * n, 9 * t));
+        << "\" NumberOfCells=\"" << t + j << "\">\n<Points>\n";
+    std::vector<double> flat(std::max(3 * n, 9 * (t + j)));
     auto nodeVectors = [&](auto value)
     {
         for (std::size_t i = 0; i < n; ++i)
@@ -32,14 +34,23 @@ void writeVtu(const World& world, const std::filesystem::path& file, io::VtkForm
     };
     arrays.float64(out, "", 3, nodeVectors([&](std::size_t i) { return nodes.position[i]; }), 3 * n);
     out << "</Points>\n<Cells>\n";
-    std::vector<std::int64_t> connectivity(3 * t), offsets(t);
+    // Triangles, then each joint as a line (VTK_LINE) along the edge of its triangle A: a threshold on
+    // `broken` shows the crack paths in ParaView.
+    std::vector<std::int64_t> connectivity(3 * t + 2 * j), offsets(t + j);
     for (std::size_t k = 0; k < t; ++k)
     {
         for (int c = 0; c < 3; ++c)
             connectivity[3 * k + c] = tris.nodes[k][c];
         offsets[k] = static_cast<std::int64_t>(3 * (k + 1));
     }
-    const std::vector<std::uint8_t> types(t, 5); // VTK_TRIANGLE
+    for (std::size_t k = 0; k < j; ++k)
+    {
+        connectivity[3 * t + 2 * k] = joints.nodes[k][0];
+        connectivity[3 * t + 2 * k + 1] = joints.nodes[k][1];
+        offsets[t + k] = static_cast<std::int64_t>(3 * t + 2 * (k + 1));
+    }
+    std::vector<std::uint8_t> types(t + j, 5);                                               // VTK_TRIANGLE
+    std::fill(types.begin() + static_cast<std::ptrdiff_t>(t), types.end(), std::uint8_t(3)); // VTK_LINE
     arrays.int64(out, "connectivity", 1, connectivity.data(), connectivity.size());
     arrays.int64(out, "offsets", 1, offsets.data(), offsets.size());
     arrays.uint8(out, "types", 1, types.data(), types.size());
@@ -55,11 +66,30 @@ void writeVtu(const World& world, const std::filesystem::path& file, io::VtkForm
         const double row[9] = {s.xx, s.xy, 0, s.xy, s.yy, 0, 0, 0, 0};
         std::copy(row, row + 9, flat.begin() + static_cast<std::ptrdiff_t>(9 * k));
     }
-    arrays.float64(out, "stress", 9, flat.data(), 9 * t);
-    std::vector<std::int32_t> body(t);
+    std::fill(flat.begin() + static_cast<std::ptrdiff_t>(9 * t),
+              flat.begin() + static_cast<std::ptrdiff_t>(9 * (t + j)),
+              0.0); // joints carry no element stress
+    arrays.float64(out, "stress", 9, flat.data(), 9 * (t + j));
+    std::vector<std::int32_t> body(t + j);
     for (std::size_t k = 0; k < t; ++k)
         body[k] = static_cast<std::int32_t>(tris.body[k]);
-    arrays.int32(out, "body", 1, body.data(), t);
+    for (std::size_t k = 0; k < j; ++k)
+        body[t + k] = static_cast<std::int32_t>(tris.body[joints.triangles[k][0]]);
+    arrays.int32(out, "body", 1, body.data(), t + j);
+    if (j > 0)
+    {
+        // Per cell: 1 for a joint line (0 for a triangle); its damage max(D_0, D_1) (0 for a
+        // triangle), and 1 once broken.
+        std::vector<std::int32_t> flag(t + j, 0);
+        std::fill(flag.begin() + static_cast<std::ptrdiff_t>(t), flag.end(), 1);
+        arrays.int32(out, "joint", 1, flag.data(), t + j);
+        for (std::size_t k = 0; k < t + j; ++k)
+            flat[k] = k < t ? 0.0 : std::max(joints.damage[k - t][0], joints.damage[k - t][1]);
+        arrays.float64(out, "damage", 1, flat.data(), t + j);
+        for (std::size_t k = 0; k < j; ++k)
+            flag[t + k] = joints.broken[k];
+        arrays.int32(out, "broken", 1, flag.data(), t + j);
+    }
     out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n";
     arrays.finish(out);
     atomic.commit();
@@ -100,7 +130,8 @@ OutputWriter::OutputWriter(const std::filesystem::path& directory, bool vtk, io:
     if (!(bytes(1) && energy_.resume(directory / "energy.csv", *bytes(1))))
     {
         energy_.open(directory / "energy.csv");
-        energy_.stream() << "time,kinetic,strain,gravity,friction_work,normal_damping_work\n";
+        energy_.stream() << "time,kinetic,strain,gravity,friction_work,normal_damping_work,broken_joints,"
+                            "energy_released,joint_work\n";
         energy_.flush();
     }
     thermo_.emplace(directory, thermoColumns(), bytes(2));
@@ -158,6 +189,11 @@ void OutputWriter::write(const World& world, Real time)
         rows += ',';
         io::appendNumber(rows, v);
     }
+    const FractureState f = world.fractureState();
+    rows += "," + std::to_string(f.broken) + ",";
+    io::appendNumber(rows, f.energyReleased);
+    rows += ',';
+    io::appendNumber(rows, f.jointWork);
     rows += '\n';
     energy_.stream() << rows;
     energy_.flush();

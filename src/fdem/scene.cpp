@@ -218,6 +218,25 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
                       : StressLaw::FiniteStrain;
         mat.plane = m.choice("plane", "strain", {"strain", "stress"}) == "stress" ? PlaneModel::Stress
                                                                                   : PlaneModel::Strain;
+        FractureParameters& f = mat.fracture; // checked where a body cracks (World::addBody)
+        f.tensileStrength = m.number("tensile_strength", 0);
+        m.requireNonNegative("tensile_strength", f.tensileStrength, "Pa");
+        f.fractureEnergy = m.number("fracture_energy", 0);
+        m.requireNonNegative("fracture_energy", f.fractureEnergy, "J/m^2");
+        f.shearFractureEnergy = m.number("shear_fracture_energy", f.fractureEnergy);
+        m.requireNonNegative("shear_fracture_energy", f.shearFractureEnergy, "J/m^2");
+        f.cohesion = m.number("cohesion", 0);
+        m.requireNonNegative("cohesion", f.cohesion, "Pa");
+        const Real phi = m.number("internal_friction_degrees", 0);
+        if (!(phi >= 0 && phi < 90))
+            m.fail("internal_friction_degrees", "must be in [0, 90) degrees");
+        f.frictionAngle = phi * 3.14159265358979323846 / 180;
+        f.penalty = m.number("joint_penalty", 10 * mat.youngsModulus);
+        m.requirePositive("joint_penalty", f.penalty, "Pa");
+        const std::string curve = m.choice("softening", "munjiza", {"munjiza", "linear", "exponential"});
+        f.curve = curve == "linear"        ? SofteningCurve::Linear
+                  : curve == "exponential" ? SofteningCurve::Exponential
+                                           : SofteningCurve::Munjiza;
         m.finish();
         scene.materialNames.push_back(name);
         scene.materials.push_back(mat);
@@ -239,6 +258,8 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
             toml::table copy = *raw;
             BodyDefinition def;
             def.velocity = takeVec2(copy, "velocity", where, file).value_or(Vec2{});
+            const auto crackMin = takeVec2(copy, "crack_box_min", where, file);
+            const auto crackMax = takeVec2(copy, "crack_box_max", where, file);
             io::TableReader b(copy, where, file);
             def.name = b.requiredString("name");
             for (const auto& existing : bodyNames)
@@ -255,6 +276,19 @@ Scene readScene(const toml::table& rootIn, const std::string& file)
             if (!found)
                 b.fail("material", "unknown material '" + material + "'");
             def.fixed = b.boolean("fixed", false);
+            def.cracks = b.boolean("cracks", false);
+            if (crackMin || crackMax)
+            {
+                if (!crackMin || !crackMax)
+                    b.fail("crack_box_min", "crack_box_min and crack_box_max ([x, y] in m) go together");
+                if (!def.cracks)
+                    b.fail("crack_box_min", "needs cracks = true");
+                if (!(crackMax->x >= crackMin->x && crackMax->y >= crackMin->y))
+                    b.fail("crack_box_max", "must be >= crack_box_min in x and y");
+                def.crackRegion = true;
+                def.crackMin = *crackMin;
+                def.crackMax = *crackMax;
+            }
             def.mesh = readGeometry(copy, b, where, file);
             b.finish();
             bodyNames.push_back(def.name);

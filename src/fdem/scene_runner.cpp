@@ -34,15 +34,16 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
                 world.triangles().size(), world.bodyCount(), limit.describe().c_str(), dt);
     if (dt > limit.limit)
     {
-        char message[256];
-        std::snprintf(
-            message, sizeof message,
-            "%s: [simulation] dt = %g s exceeds the stable limit %g s (elements %g s, contact %g s); "
-            "use --force-dt to run anyway",
-            sceneFile.c_str(), dt, limit.limit, limit.element, limit.contact);
+        std::string parts =
+            limit.describe(); // "stable time step L s (elements ..., contact ...[, joints ...])"
+        parts = parts.substr(parts.find('('));
+        char head[64];
+        std::snprintf(head, sizeof head, "dt = %g s exceeds the stable limit %g s ", dt, limit.limit);
+        const std::string message =
+            sceneFile + ": [simulation] " + head + parts + "; use --force-dt to run anyway";
         if (!allowUnstableTimeStep)
             throw InputError(message);
-        std::fprintf(stderr, "veridem: warning: %s (running anyway)\n", message);
+        std::fprintf(stderr, "veridem: warning: %s (running anyway)\n", message.c_str());
     }
     // The scene file's hash ties a checkpoint to it. A caller with a table of its own (no file)
     // gets hash 0, and may not ask for checkpoints or a restart.

@@ -28,7 +28,10 @@ Real contactTimeStep(Real nodeMass, Real stiffness, Real dampingRatio)
 std::string TimeStepLimit::describe() const
 {
     std::ostringstream s;
-    s << "stable time step " << limit << " s (elements " << element << " s, contact " << contact << " s)";
+    s << "stable time step " << limit << " s (elements " << element << " s, contact " << contact << " s";
+    if (std::isfinite(joint))
+        s << ", joints " << joint << " s";
+    s << ")";
     return s.str();
 }
 
@@ -61,7 +64,31 @@ TimeStepLimit stableTimeStep(const World& world)
         const Real stiffness = 4 * 3 * penalty * longestEdge(a, b, c) / h;
         r.contact = std::min(r.contact, contactTimeStep(nodeMass, stiffness, contactZeta));
     }
-    r.limit = std::min(r.element, r.contact);
+    const JointStore& joints = world.joints();
+    for (std::size_t j = 0; j < joints.size(); ++j)
+    {
+        const Real p = world.materials()[joints.material[j]].fracture.penalty;
+        for (int k = 0; k < 2; ++k)
+        {
+            const auto a = joints.nodes[j][k], b = joints.nodes[j][k + 2];
+            const Real inverseMass = nodes.inverseMass[a] + nodes.inverseMass[b];
+            if (inverseMass == 0)
+                continue;
+            Real dtElement = INFINITY;
+            for (auto t : joints.triangles[j])
+            {
+                const Material& m = world.materials()[tris.material[t]];
+                const auto& ids = tris.nodes[t];
+                const Real h =
+                    minimumAltitude(nodes.referencePosition[ids[0]], nodes.referencePosition[ids[1]],
+                                    nodes.referencePosition[ids[2]]);
+                dtElement = std::min(dtElement, 0.98 * h / pWaveSpeed(m));
+            }
+            const Real omegaElement = 2 / dtElement, omegaJoint2 = p * inverseMass;
+            r.joint = std::min(r.joint, 2 / std::sqrt(omegaElement * omegaElement + omegaJoint2));
+        }
+    }
+    r.limit = std::min({r.element, r.contact, r.joint});
     return r;
 }
 

@@ -8,6 +8,10 @@
 //   damping factor for the dashpot's zeta). With k_c = 3 p L / H per edge (world.cpp) and up to two
 //   edges of one element and both contact roles acting on a node, k_c = 4 * 3 p_max L_max / H_min is
 //   used for every element with a free node (p_max = max(p_n, p_t), m the element's lightest node).
+// Joints (fracture/joints.h): each end of a joint ties two nodes with the stiffness (L/2)(p/h) = p/2
+//   (h = L) in both directions; a node has up to two joints (the two edges of its corner), so
+//   omega_j^2 = 2 (p/2)(1/m_a + 1/m_b), added to the element's omega_e = 2/dt_e (Gershgorin bound):
+//   dt_j = 2 / sqrt(omega_e^2 + omega_j^2).
 #pragma once
 
 #include "core/vec3.h"
@@ -32,6 +36,7 @@ struct TimeStepLimit
 {
     Real element = 0;             ///< smallest element limit [s]
     Real contact = 0;             ///< smallest contact limit [s]
+    Real joint = INFINITY;        ///< smallest joint limit [s] (infinite without joints)
     Real limit = 0;               ///< min of the two [s]
     std::string describe() const; ///< one line for the log, e.g. "dt_max = 1.2e-06 s (contact ...)"
 };

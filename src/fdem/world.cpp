@@ -1,7 +1,8 @@
 // Design note: one step of the 2D FEM/DEM solver, read top to bottom in World::step().
 //
 //  1. computeElementForces  CST internal forces (elements/cst.h), a pure function per triangle of its
-//                           reference inverse and current nodes, scattered to the nodes, plus gravity.
+//                           reference inverse and current nodes, scattered to the nodes, plus gravity
+//                           (world_elements.cpp); then the joints of bodies that crack (world_fracture.cpp).
 //  2. detectContacts        only when the Verlet-skin criterion says the candidate list may be stale
 //                           (broadphase.h); history is carried by persistent keys (contact_list.h).
 //  3. computeContactForces  per couple, both roles: potential contact (contact/potential.h) gives the
@@ -96,6 +97,7 @@ std::uint32_t World::addMaterial(const Material& m, const std::string& name)
         bad("viscosity must be >= 0 Pa s (got " + std::to_string(m.viscosity) + ")");
     materials_.push_back(m);
     constants_.push_back(elasticConstants(m));
+    laws_.push_back(checkedCohesiveConstants(m.fracture, "material '" + name + "'"));
     return static_cast<std::uint32_t>(materials_.size() - 1);
 }
 
@@ -103,11 +105,16 @@ std::uint32_t World::addBody(const BodyDefinition& body)
 {
     if (body.material >= materials_.size())
         throw InputError("body '" + body.name + "': unknown material index " + std::to_string(body.material));
-    const TriangleMesh mesh = validatedMesh(body.mesh, "body '" + body.name + "'");
+    TriangleMesh mesh = validatedMesh(body.mesh, "body '" + body.name + "'");
+    const SplitMesh split = body.cracks ? splitForCracks(body, mesh) : SplitMesh{}; // world_fracture.cpp
+    if (body.cracks)
+        mesh = split.mesh;
     const auto id = static_cast<std::uint32_t>(bodyNames_.size());
     bodyNames_.push_back(body.name);
     bodyFixed_.push_back(body.fixed ? 1 : 0);
+    bodyCracks_.push_back(body.cracks ? 1 : 0);
     const auto first = static_cast<std::uint32_t>(nodes_.size());
+    const auto firstTriangle = static_cast<std::uint32_t>(triangles_.size());
     const Real rho = materials_[body.material].density;
     for (const Vec2& p : mesh.points)
     {
@@ -139,6 +146,9 @@ std::uint32_t World::addBody(const BodyDefinition& body)
         nodes_.inverseMass[n] = nodes_.prescribed[n] ? 0 : 1 / nodes_.mass[n];
     if (nodes_.size() >= (1u << 31) || triangles_.size() >= (1u << 31))
         throw InputError("too many nodes or triangles");
+    triangleJoints_.resize(triangles_.size(), {~0u, ~0u, ~0u});
+    if (body.cracks)
+        insertJoints(body, split, first, firstTriangle);
     contactsValid_ = false;
     listsValid_ = false;
     return id;
@@ -198,41 +208,14 @@ void World::step()
     if (!listsValid_)
         refreshActiveLists();
     computeElementForces();
+    if (!joints_.nodes.empty())
+        computeJointForces();
     if (needsDetection())
         detectContacts();
     computeContactForces();
     integrate();
     time_ += settings_.timeStep;
     ++steps_;
-}
-
-void World::computeElementForces()
-{
-    // Nodes and triangles that are prescribed at rest get no forces (they would be discarded).
-    const Vec2 g = settings_.gravity;
-    for (const auto n : activeNodes_)
-        nodes_.force[n] = nodes_.mass[n] * g;
-    for (const auto t : activeTriangles_)
-    {
-        const auto& ids = triangles_.nodes[t];
-        const std::array<Vec2, 3> x{nodes_.position[ids[0]], nodes_.position[ids[1]],
-                                    nodes_.position[ids[2]]};
-        const std::array<Vec2, 3> v{nodes_.velocity[ids[0]], nodes_.velocity[ids[1]],
-                                    nodes_.velocity[ids[2]]};
-        const CstResult r =
-            cstInternalForces(x, v, triangles_.referenceInverse[t], constants_[triangles_.material[t]]);
-        if (!(r.jacobian > 0))
-        {
-            std::ostringstream s;
-            s << "step " << steps_ << " (t = " << time_ << " s): triangle " << t << " of body '"
-              << bodyNames_[triangles_.body[t]] << "' is inverted (J = " << r.jacobian
-              << "); reduce the time step or raise the contact penalty";
-            throw SimulationError(s.str());
-        }
-        triangles_.stress[t] = r.stress;
-        for (int i = 0; i < 3; ++i)
-            nodes_.force[ids[i]] += r.force[i];
-    }
 }
 
 bool World::needsDetection() const
@@ -264,7 +247,10 @@ void World::detectContacts()
     {
         const auto& ids = triangles_.nodes[t];
         BoundingBox& box = boxes[t];
-        box = {nodes_.position[ids[0]], nodes_.position[ids[0]], triangles_.body[t], false};
+        // Triangles of a body that cracks are each their own group (self-contact); see jointedOrAdjacent.
+        const std::uint32_t group =
+            bodyCracks_[triangles_.body[t]] ? (1u << 31) | static_cast<std::uint32_t>(t) : triangles_.body[t];
+        box = {nodes_.position[ids[0]], nodes_.position[ids[0]], group, false};
         for (auto n : ids)
         {
             const Vec2 x = nodes_.position[n];
@@ -273,7 +259,9 @@ void World::detectContacts()
             box.active = box.active || !nodes_.prescribed[n] || lengthSquared(nodes_.velocity[n]) > 0;
         }
     }
-    contacts_.rebuild(findCandidatePairs(boxes, buffer_));
+    auto pairs = findCandidatePairs(boxes, buffer_);
+    removeTiedPairs(pairs);
+    contacts_.rebuild(pairs);
     positionAtDetection_.clear();
     for (const auto n : activeNodes_)
         positionAtDetection_.push_back(nodes_.position[n]);

@@ -4,10 +4,12 @@
 #pragma once
 
 #include "fdem/contact_list.h"
+#include "fdem/fracture/joints.h"
 #include "fdem/material.h"
 #include "fdem/mesh.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace veridem::fdem
@@ -35,10 +37,22 @@ struct WorldSettings
 struct BodyDefinition
 {
     std::string name;
-    TriangleMesh mesh;          ///< validated (counter-clockwise) triangulation [m]
-    std::uint32_t material = 0; ///< index returned by World::addMaterial
-    Vec2 velocity{};            ///< initial velocity of every node [m/s]
-    bool fixed = false;         ///< every node prescribed to move with `velocity`
+    TriangleMesh mesh;           ///< validated (counter-clockwise) triangulation [m]
+    std::uint32_t material = 0;  ///< index returned by World::addMaterial
+    Vec2 velocity{};             ///< initial velocity of every node [m/s]
+    bool fixed = false;          ///< every node prescribed to move with `velocity`
+    bool cracks = false;         ///< joints on the interior edges (all, or those in the region below)
+    bool crackRegion = false;    ///< only the edges whose midpoint lies in [crackMin, crackMax]
+    Vec2 crackMin{}, crackMax{}; ///< region corners [m]
+};
+
+/// Fracture summary [count, J/m].
+struct FractureState
+{
+    std::size_t joints = 0;  ///< joint elements inserted
+    std::size_t broken = 0;  ///< of which broken
+    Real energyReleased = 0; ///< work done on the broken joints up to their breaking [J/m]
+    Real jointWork = 0;      ///< work done on all joints since t = 0 [J/m]
 };
 
 /// Mass-weighted body summary.
@@ -80,6 +94,9 @@ class World
     std::uint32_t addBody(const BodyDefinition& body);
     /// Prescribes the velocity [m/s] of the nodes of `body` inside the box [lo, hi] [m]; returns their count.
     std::size_t prescribeNodes(std::uint32_t body, Vec2 lo, Vec2 hi, Vec2 velocity);
+    /// Prescribes the velocity [m/s] of one node (the copies of a split node share a position, so a
+    /// box cannot tell them apart).
+    void prescribeNode(std::uint32_t node, Vec2 velocity);
     /// Sets the velocity of every free node of `body` [m/s].
     void setBodyVelocity(std::uint32_t body, Vec2 velocity);
     /// Replaces the contact parameters (same checks as the constructor); history is kept.
@@ -106,6 +123,8 @@ class World
     std::size_t detections() const { return detections_; }
     std::size_t coupleCount() const { return contacts_.couples().size(); }
     const std::vector<Couple>& couples() const { return contacts_.couples(); }
+    const JointStore& joints() const { return joints_; }
+    FractureState fractureState() const;
 
   private:
     friend struct CheckpointAccess; // fdem/checkpoint.cpp saves and restores the private state
@@ -115,6 +134,12 @@ class World
     bool needsDetection() const;
     void detectContacts();
     void computeContactForces();
+    SplitMesh splitForCracks(const BodyDefinition& body, const TriangleMesh& mesh) const;
+    void insertJoints(const BodyDefinition& definition, const SplitMesh& split, std::uint32_t firstNode,
+                      std::uint32_t firstTriangle);
+    void computeJointForces();
+    bool jointedOrAdjacent(std::uint32_t a, std::uint32_t b) const;
+    void removeTiedPairs(std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) const;
     void integrate();
 
     WorldSettings settings_;
@@ -138,6 +163,14 @@ class World
     Real frictionWork_ = 0;
     Real normalDampingWork_ = 0;
     FrictionDiagnostics diagnostics_;
+    JointStore joints_;
+    std::vector<CohesiveConstants> laws_;                      // per material
+    std::vector<std::uint8_t> bodyCracks_;                     // per body
+    std::vector<std::array<std::uint32_t, 3>> triangleJoints_; // joint ids per triangle (~0u: none)
+    std::vector<std::array<Vec2, 3>> elementForce_; // scratch of the element loop (world_elements.cpp)
+    std::vector<Real> elementJacobian_;             // scratch of the element loop
+    std::size_t brokenJoints_ = 0;
+    Real energyReleased_ = 0;
 };
 
 } // namespace veridem::fdem
