@@ -16,6 +16,7 @@
 #include "io/outlet_output.h"
 #include "io/particle_flow_keys.h"
 #include "io/particle_output.h"
+#include "io/particle_state.h"
 #include "io/region_output.h"
 #include "io/run_control.h"
 #include "io/thermo_output.h"
@@ -234,18 +235,18 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     std::optional<io::OutletRecorder> outletRecorder;
     if (root)
     {
-        recorder.emplace(options.outDir, scene.writeVtk, scene.vtkFormat, resume ? &*resume : nullptr);
-        thermo.emplace(options.outDir, thermoBytes,
+        recorder.emplace(options.outDir, scene.output, resume ? &*resume : nullptr);
+        thermo.emplace(options.outDir, scene.output, thermoBytes,
                        measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
         if (measure.contacts)
-            contacts.emplace(options.outDir, scene.vtkFormat,
+            contacts.emplace(options.outDir, scene.output,
                              resume ? resume->frameTimes : std::vector<double>{});
         if (measure.region)
-            region.emplace(options.outDir, measure.regionMin, measure.regionMax, regionBytes);
+            region.emplace(options.outDir, scene.output, measure.regionMin, measure.regionMax, regionBytes);
         if (wallLoads)
-            walls.emplace(options.outDir, wallBytes);
+            walls.emplace(options.outDir, scene.output, wallBytes);
         if (outlets)
-            outletRecorder.emplace(options.outDir, outletBytes);
+            outletRecorder.emplace(options.outDir, scene.output, outletBytes);
     }
     // The world the outputs and checkpoints read: this one, or on several ranks the whole world
     // gathered on the first (nullopt on the others). Collective.
@@ -268,8 +269,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (rankStep && !(gathered = wholeWorld()))
             return;
         const dem::World& w = gathered ? *gathered : world;
-        recorder->record(w);
         const std::vector<dem::ContactRecord> now = dem::evaluateContacts(w, 0.0);
+        recorder->record(w, &now);
+        if (w.stepCount == totalSteps) // (the last state, for a scene that starts from it)
+            io::writeParticleState(options.outDir / "state.csv", w, scene.dt);
         if (gathered) // the step's contact counts, as one process counts them
         {
             gathered->health.touchingPairs = gathered->health.touchingWalls = 0;
@@ -284,7 +287,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if (walls)
             walls->record(w);
         if (outletRecorder)
-            outletRecorder->record(w.time, outletTotals);
+            outletRecorder->record(w, outletTotals);
     };
     const auto closeOutputs = [&]
     {
@@ -317,6 +320,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             bytes.push_back(walls->size());
         if (outletRecorder)
             bytes.push_back(outletRecorder->size());
+        io::writeParticleState(options.outDir / "state.csv", gathered ? *gathered : world, scene.dt);
         io::writeDemCheckpoint(checkpointPath, gathered ? *gathered : world, sceneHash,
                                {recorder->frameTimes(), bytes, 0},
                                ledgerState && rankStep ? &ledgerTotals.state : ledgerState, &saved);
