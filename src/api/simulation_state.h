@@ -18,6 +18,7 @@
 #include "io/outlet_output.h"
 #include "io/particle_flow_keys.h"
 #include "io/particle_output.h"
+#include "io/particle_state.h"
 #include "io/region_output.h"
 #include "io/thermo_output.h"
 #include "io/toml_reader.h"
@@ -88,16 +89,16 @@ struct Simulation::State
         }
         const io::MeasurementOptions& measure = scene.measurements;
         const std::filesystem::path& dir = options.outDir;
-        recorder.emplace(dir, scene.writeVtk, scene.vtkFormat, resume ? &*resume : nullptr);
-        thermo.emplace(dir, thermoBytes, measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
+        recorder.emplace(dir, scene.output, resume ? &*resume : nullptr);
+        thermo.emplace(dir, scene.output, thermoBytes, measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
         if (measure.contacts)
-            contacts.emplace(dir, scene.vtkFormat, resume ? resume->frameTimes : std::vector<double>{});
+            contacts.emplace(dir, scene.output, resume ? resume->frameTimes : std::vector<double>{});
         if (measure.region)
-            region.emplace(dir, measure.regionMin, measure.regionMax, regionBytes);
+            region.emplace(dir, scene.output, measure.regionMin, measure.regionMax, regionBytes);
         if (wallLoads())
-            walls.emplace(dir, wallBytes);
+            walls.emplace(dir, scene.output, wallBytes);
         if (!scene.flow.outlets.empty())
-            outlets.emplace(dir, outletBytes);
+            outlets.emplace(dir, scene.output, outletBytes);
     }
 
     /// The outlets' totals: this process's, or on several ranks their sum (on the first). Collective.
@@ -123,8 +124,10 @@ struct Simulation::State
         if (rankStep && !(gathered = dist::gatherWorld(world(), *rankStep)))
             return; // (not the first rank)
         const dem::World& w = gathered ? *gathered : world();
-        recorder->record(w);
         const std::vector<dem::ContactRecord> now = dem::evaluateContacts(w, 0.0);
+        recorder->record(w, &now);
+        if (w.stepCount == totalSteps) // (the last state, for a scene that starts from it)
+            io::writeParticleState(options.outDir / "state.csv", w, scene.dt);
         if (gathered) // the step's contact counts, as one process counts them
         {
             gathered->health.touchingPairs = gathered->health.touchingWalls = 0;
@@ -139,7 +142,7 @@ struct Simulation::State
         if (walls)
             walls->record(w);
         if (outlets)
-            outlets->record(w.time, outletTotals);
+            outlets->record(w, outletTotals);
     }
 
     void writeCheckpoint(const std::filesystem::path& path)
@@ -162,6 +165,8 @@ struct Simulation::State
             if (outlets)
                 outputs.fileBytes.push_back(outlets->size());
         }
+        if (files())
+            io::writeParticleState(options.outDir / "state.csv", gathered ? *gathered : world(), scene.dt);
         io::writeDemCheckpoint(path, gathered ? *gathered : world(), hash, outputs,
                                ledgerState() && rankStep ? &ledgerTotals.state : ledgerState(), &saved);
     }

@@ -124,14 +124,15 @@ OutputWriter::OutputWriter(const std::filesystem::path& directory, bool vtk, io:
     if (!(bytes(0) && bodies_.resume(directory / "bodies.csv", *bytes(0))))
     {
         bodies_.open(directory / "bodies.csv");
-        bodies_.stream() << "time,body,name,x,y,vx,vy\n";
+        bodies_.stream() << "t,body,name,x,y,vx,vy\n";
         bodies_.flush();
     }
     if (!(bytes(1) && energy_.resume(directory / "energy.csv", *bytes(1))))
     {
         energy_.open(directory / "energy.csv");
-        energy_.stream() << "time,kinetic,strain,gravity,friction_work,normal_damping_work,broken_joints,"
-                            "energy_released,joint_work\n";
+        energy_.stream() << "t,kinetic,strain,gravity,friction_work,normal_damping_work,broken_joints,"
+                            "energy_released,joint_work
+";
         energy_.flush();
     }
     thermo_.emplace(directory, thermoColumns(), bytes(2));

@@ -6,7 +6,8 @@
 // new one) and the .pvd lists the earlier frames whose .vtu files are in the directory. Written outside the
 // step (STYLE.md: no output in step()). Every write is checked (a failure throws OutputError naming the
 // file); the CSVs are flushed and the .pvd is rewritten under a temporary name and renamed at every output,
-// each .vtu likewise, so the files are complete at any moment. Numbers have round-trip precision.
+// each .vtu likewise, so the files are complete at any moment. Numbers have round-trip precision; each
+// CSV starts with the time t [s] after the settling, step count x dt (io::outputTime), as the 3D files.
 #pragma once
 
 #include "fdem/world.h"

@@ -6,6 +6,7 @@
 #include "fdem/scene.h"
 #include "fdem/time_step.h"
 #include "io/checkpoint_file.h"
+#include "io/output_options.h"
 #include "io/run_control.h"
 
 #include <algorithm>
@@ -117,7 +118,7 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
     {
         world.step();
         if (i % outputEvery == 0 || i == totalSteps)
-            output.write(world, world.time() - start);
+            output.write(world, io::outputTime(i, dt)); // (exact: step count x dt)
         bool checkpointed = false;
         if (checkpointEvery && (i % checkpointEvery == 0 || i == totalSteps))
         {

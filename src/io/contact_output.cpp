@@ -16,11 +16,18 @@ std::string vtpName(std::size_t frame)
     std::snprintf(name, sizeof name, "contacts_%06zu.vtp", frame);
     return name;
 }
+
+std::string csvName(std::size_t frame)
+{
+    char name[64];
+    std::snprintf(name, sizeof name, "contacts_%06zu.csv", frame);
+    return name;
+}
 } // namespace
 
-ContactRecorder::ContactRecorder(const std::filesystem::path& directory, VtkFormat format,
+ContactRecorder::ContactRecorder(const std::filesystem::path& directory, const OutputOptions& options,
                                  const std::vector<double>& frameTimes)
-    : directory_(directory), format_(format), frameTimes_(frameTimes)
+    : directory_(directory), options_(options), frameTimes_(frameTimes)
 {
     std::error_code error;
     for (std::size_t k = 0; k < frameTimes_.size(); ++k)
@@ -29,10 +36,53 @@ ContactRecorder::ContactRecorder(const std::filesystem::path& directory, VtkForm
 
 void ContactRecorder::record(const dem::World& world, const std::vector<dem::ContactRecord>& contacts)
 {
+    if (options_.contactsVtk)
+        writeVtp(world, contacts);
+    if (options_.contactsCsv)
+        writeCsv(world, contacts);
+    frameTimes_.push_back(outputTime(world.stepCount, options_.dt));
+    listed_.push_back(options_.contactsVtk);
+    if (options_.contactsVtk)
+        writePvd();
+}
+
+void ContactRecorder::writeCsv(const dem::World& world, const std::vector<dem::ContactRecord>& contacts) const
+{
+    AtomicFile file(directory_ / csvName(frameTimes_.size()));
+    std::string time;
+    appendNumber(time, outputTime(world.stepCount, options_.dt));
+    std::string text = "t,id,partner,wall,overlap,cx,cy,cz,nx,ny,nz,fnx,fny,fnz,ftx,fty,ftz\n";
+    for (const dem::ContactRecord& c : contacts)
+    {
+        text += time;
+        text += ',' + std::to_string(world.particles.id[c.i]) + ',';
+        if (c.wall)
+        {
+            const std::string& name = world.walls[c.partner].name;
+            text += ',' + (name.empty() ? std::to_string(c.partner) : name);
+        }
+        else
+            text += std::to_string(world.particles.id[c.partner]) + ',';
+        text += ',';
+        appendNumber(text, c.overlap);
+        for (const Vec3& v : {c.point, c.normal, c.normalForce, c.tangentialForce})
+            for (const Real value : {v.x, v.y, v.z})
+            {
+                text += ',';
+                appendNumber(text, value);
+            }
+        text += '\n';
+    }
+    file.stream() << text;
+    file.commit();
+}
+
+void ContactRecorder::writeVtp(const dem::World& world, const std::vector<dem::ContactRecord>& contacts) const
+{
     const std::size_t n = contacts.size();
     AtomicFile file(directory_ / vtpName(frameTimes_.size()));
     std::ostream& out = file.stream();
-    VtkXmlArrays arrays(format_);
+    VtkXmlArrays arrays(options_.vtkFormat);
     out << arrays.vtkFileOpening("PolyData") << "<PolyData>\n<Piece NumberOfPoints=\"" << 2 * n
         << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << n << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
     std::vector<double> points(6 * n);
@@ -86,9 +136,6 @@ void ContactRecorder::record(const dem::World& world, const std::vector<dem::Con
     out << "</CellData>\n</Piece>\n</PolyData>\n";
     arrays.finish(out);
     file.commit();
-    frameTimes_.push_back(world.time);
-    listed_.push_back(true);
-    writePvd();
 }
 
 void ContactRecorder::writePvd() const

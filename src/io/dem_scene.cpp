@@ -5,6 +5,7 @@
 #include "dem/models/normal.h"
 #include "dem/walls/wall.h"
 #include "io/domain_keys.h"
+#include "io/particle_file.h"
 #include "io/particle_flow_keys.h"
 #include "io/scene_limits.h"
 #include "io/surface_mesh_reader.h"
@@ -31,6 +32,9 @@ dem::Material readMaterial(TableReader& t)
 {
     dem::Material m;
     m.name = t.requiredString("name");
+    if (m.name.empty() || m.name.find_first_of(", \t\r\n\"#") != std::string::npos)
+        t.fail("name", "must be a non-empty name without commas, spaces, quotes or '#' (it is a column of "
+                       "state.csv and particles.csv)");
     m.density = t.requiredNumber("density");
     t.requirePositive("density", m.density, "kg/m^3");
     const std::string model = t.choice("model", "linear", {"linear", "hertz", "jkr", "dmt"});
@@ -143,56 +147,6 @@ void placeOnWall(dem::World& world, std::uint32_t i, const dem::Wall& wall, bool
         const Vec3 inPlaneSlip = slip - dot(slip, normal) * normal;
         p.angularVelocity[i] = cross(normal, inPlaneSlip) / r; // no spin about the normal
     }
-}
-
-/// Reads a [[particles]] file of 'x y z' lines; `reserved` spheres are still to come from other
-/// tables. Lines are read with a length cap and counted against maxSphereCount() before each sphere
-/// is added, so a file without line ends (a device) or with too many lines cannot exhaust memory.
-void readParticleFile(TableReader& t, dem::World& world, const std::string& sceneFile, double reserved)
-{
-    std::filesystem::path path = t.requiredString("file");
-    if (path.is_relative())
-        path = std::filesystem::path(sceneFile).parent_path() / path;
-    const std::uint32_t material = world.materialId(t.requiredString("material"));
-    const Real radius = t.requiredNumber("radius");
-    t.requirePositive("radius", radius, "m");
-    const Vec3 velocity = t.vec3("velocity", {});
-    const bool fixed = t.boolean("fixed", false);
-    t.finish();
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error))
-        t.fail("file", "is a directory: '" + path.string() + "'");
-    std::ifstream in(path);
-    if (!in)
-        t.fail("file", "cannot be opened: '" + path.string() + "'");
-    constexpr std::streamsize kMaxLine = 4096; // characters per line, comments included
-    std::string line(kMaxLine, '\0');
-    std::size_t lineNumber = 0;
-    const double limit = maxSphereCount();
-    auto where = [&] { return path.string() + ":" + std::to_string(lineNumber); };
-    while (in.getline(line.data(), kMaxLine) || in.gcount() > 0)
-    {
-        ++lineNumber;
-        if (in.fail() && !in.eof()) // the line filled the buffer without ending
-            throw InputError(where() + ": line longer than " + std::to_string(kMaxLine - 1) +
-                             " characters: not a text file of 'x y z' lines");
-        const std::string_view text(line.data(), static_cast<std::size_t>(std::strlen(line.data())));
-        if (text.empty() || text[0] == '#')
-            continue;
-        std::istringstream s{std::string(text)};
-        Vec3 x;
-        if (!(s >> x.x >> x.y >> x.z) || !isFinite(x))
-            throw InputError(where() + ": expected three numbers 'x y z' in metres");
-        if (double(world.particles.size()) + 1 + reserved > limit)
-            checkSphereCount(double(world.particles.size()) + 1 + reserved,
-                             "the [[particles]] file '" + path.string() + "' (to line " +
-                                 std::to_string(lineNumber) + ") and the other tables",
-                             sceneFile);
-        world.particles.add(x, velocity, {}, radius, world.materials[material].density, material);
-        world.particles.fixed.back() = fixed;
-    }
-    if (in.bad())
-        throw InputError(path.string() + ": read error");
 }
 
 /// A box filled with spheres on a cubic lattice (optionally jittered, deterministic seed).
@@ -389,7 +343,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     const Real flowInterval = simulation->number("flow_interval", 100 * scene.dt);
     simulation->requirePositive("flow_interval", flowInterval, "s");
     simulation->finish();
-    scene.measurements = readMeasurementOptions(top);
+    scene.measurements = readMeasurementOptions(top, scene.output);
 
     auto materials = top.arrayOfTables("material");
     if (materials.empty())
@@ -447,10 +401,12 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     }
     const double planned = double(world.particles.size()) + latticeSpheres;
     checkSphereCount(planned, "the [[sphere]] and [[lattice]] tables", file);
+    std::vector<GivenIds> givenIds; // (files with an id column)
     for (auto& f : top.arrayOfTables("particles"))
-        readParticleFile(f, world, file, latticeSpheres);
+        readParticleFile(f, world, file, latticeSpheres, givenIds);
     for (const Lattice& l : lattices)
         fillLattice(l, world);
+    numberParticles(world.particles, givenIds);
     const std::optional<TableReader> domain = readDomain(top, world, scene.measurements);
     scene.flow =
         readParticleFlow(top, world, std::max<std::uint64_t>(1, std::llround(flowInterval / scene.dt)));
@@ -463,6 +419,9 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     checkSphereRanges(world, scene.dt, file);
     const double expected = expectedParticles(scene.flow, world, scene.duration, file);
     scene.vtkFormat = chooseVtkFormat(vtkFormat, static_cast<std::size_t>(std::fmin(expected, 1e12)));
+    scene.output.dt = scene.dt;
+    scene.output.vtk = scene.writeVtk;
+    scene.output.vtkFormat = scene.vtkFormat;
     if (scene.characteristicSpeed == 0)
         scene.characteristicSpeed = std::fmax(1.0, maxSpeed);
     try

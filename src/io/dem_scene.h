@@ -6,6 +6,7 @@
 #include "dem/particle_flow.h"
 #include "dem/world.h"
 #include "io/measurement_keys.h"
+#include "io/output_options.h"
 #include "io/vtk_xml.h"
 
 #include <toml++/toml.h>
@@ -27,7 +28,8 @@ struct DemScene
     bool writeVtk = true;
     io::VtkFormat vtkFormat = io::VtkFormat::Ascii; // vtk_format, "auto" resolved by the sphere count
     MeasurementOptions measurements;                // [output] (io/measurement_keys.h)
-    dem::ParticleFlow flow;                         // [[insert]], [[outlet]] (io/particle_flow_keys.h)
+    OutputOptions output;   // the files written, their particle fields and dt (io/output_options.h)
+    dem::ParticleFlow flow; // [[insert]], [[outlet]] (io/particle_flow_keys.h)
 };
 
 /// Builds the scene; `file` is used in messages and to resolve relative particle-file paths.

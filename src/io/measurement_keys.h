@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "io/output_options.h"
 #include "io/toml_reader.h"
 
 namespace veridem::io
@@ -11,13 +12,14 @@ namespace veridem::io
 struct MeasurementOptions
 {
     bool energy = false;       // energy ledger columns in thermo.csv (a diagnostic pass every step)
-    bool contacts = false;     // contact network: DIR/contacts_<n>.vtp and DIR/contacts.pvd
+    bool contacts = false;     // contact network: .vtp (contacts) and/or .csv (contacts_csv) per output
     bool region = false;       // DIR/region.csv for the box [regionMin, regionMax]
     Vec3 regionMin, regionMax; // corners of the axis-aligned measuring box [m]
 };
 
 /// Reads the optional `[output]` table of `top` (defaults if absent); bad values are InputErrors
-/// naming the key.
-MeasurementOptions readMeasurementOptions(TableReader& top);
+/// naming the key. Its file choices (particle_fields, particles_csv, contacts, contacts_csv) go
+/// to `output`.
+MeasurementOptions readMeasurementOptions(TableReader& top, OutputOptions& output);
 
 } // namespace veridem::io

@@ -5,8 +5,9 @@
 namespace veridem::io
 {
 
-OutletRecorder::OutletRecorder(const std::filesystem::path& directory,
+OutletRecorder::OutletRecorder(const std::filesystem::path& directory, const OutputOptions& options,
                                std::optional<std::uint64_t> resumeBytes)
+    : dt_(options.dt)
 {
     if (resumeBytes && csv_.resume(directory / "outlets.csv", *resumeBytes))
         return;
@@ -15,8 +16,9 @@ OutletRecorder::OutletRecorder(const std::filesystem::path& directory,
     csv_.flush();
 }
 
-void OutletRecorder::record(Real time, const std::vector<dem::Outlet>& outlets)
+void OutletRecorder::record(const dem::World& world, const std::vector<dem::Outlet>& outlets)
 {
+    const double time = outputTime(world.stepCount, dt_);
     std::string rows;
     for (const dem::Outlet& o : outlets)
     {

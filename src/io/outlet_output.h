@@ -6,6 +6,7 @@
 
 #include "dem/particle_flow.h"
 #include "io/output_file.h"
+#include "io/output_options.h"
 
 #include <filesystem>
 #include <optional>
@@ -17,14 +18,17 @@ class OutletRecorder
 {
   public:
     /// With `resumeBytes` (a restart), continues an existing outlets.csv cut to that size.
-    explicit OutletRecorder(const std::filesystem::path& directory,
-                            std::optional<std::uint64_t> resumeBytes = std::nullopt);
-    void record(Real time, const std::vector<dem::Outlet>& outlets); // time [s]
+    /// Times: outputTime(step count, options.dt).
+    OutletRecorder(const std::filesystem::path& directory, const OutputOptions& options,
+                   std::optional<std::uint64_t> resumeBytes = std::nullopt);
+    /// One row per outlet at the world's time; `outlets`: their totals.
+    void record(const dem::World& world, const std::vector<dem::Outlet>& outlets);
     std::uint64_t size() { return csv_.size(); }
     void close() { csv_.close(); }
 
   private:
     AppendFile csv_;
+    Real dt_; // [s]
 };
 
 } // namespace veridem::io

@@ -232,7 +232,9 @@ void startParticleFlow(dem::ParticleFlow& flow, dem::World& world, bool energy, 
     if (energy && !flow.empty())
         throw InputError(file + ": [output] energy = true cannot be combined with [[insert]] or [[outlet]] "
                                 "(the energy ledger assumes a fixed set of particles)");
-    flow.nextId = static_cast<std::uint32_t>(world.particles.size());
+    flow.nextId = 0; // after the largest id (a [[particles]] file may give ids with gaps)
+    for (const std::uint32_t id : world.particles.id)
+        flow.nextId = std::max(flow.nextId, id + 1);
     if (flow.inserters.empty() || world.neighbors.skin > 0)
         return;
     Real largest = flow.largestRadius();

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "dem/region_measures.h"
+#include "io/output_options.h"
 #include "io/thermo_table.h"
 
 #include <filesystem>
@@ -19,13 +20,15 @@ class RegionRecorder
 {
   public:
     /// The box [lo, hi] [m]; with `resumeBytes` (a restart), continues region.csv cut to that size.
-    RegionRecorder(const std::filesystem::path& directory, const Vec3& lo, const Vec3& hi,
-                   std::optional<std::uint64_t> resumeBytes = std::nullopt);
+    /// Times: outputTime(step count, options.dt).
+    RegionRecorder(const std::filesystem::path& directory, const OutputOptions& options, const Vec3& lo,
+                   const Vec3& hi, std::optional<std::uint64_t> resumeBytes = std::nullopt);
     void record(const dem::World& world, const std::vector<dem::ContactRecord>& contacts);
     std::uint64_t size() { return table_.size(); }
     void close() { table_.close(); }
 
   private:
+    Real dt_; // [s]
     Vec3 lo_, hi_;
     ThermoTable table_;
 };

@@ -23,9 +23,9 @@ std::vector<std::string> columns(bool ledger)
 }
 } // namespace
 
-ThermoRecorder::ThermoRecorder(const std::filesystem::path& directory,
+ThermoRecorder::ThermoRecorder(const std::filesystem::path& directory, const OutputOptions& options,
                                std::optional<std::uint64_t> resumeBytes, const dem::EnergyLedger* ledger)
-    : ledger_(ledger), table_(directory, columns(ledger != nullptr), resumeBytes)
+    : dt_(options.dt), ledger_(ledger), table_(directory, columns(ledger != nullptr), resumeBytes)
 {
 }
 
@@ -38,7 +38,7 @@ void ThermoRecorder::record(const dem::World& world, const std::vector<dem::Cont
     else
         for (const dem::ContactRecord& c : contacts)
             elastic += c.storedEnergy();
-    std::vector<ThermoValue> row = {world.time,
+    std::vector<ThermoValue> row = {outputTime(world.stepCount, dt_),
                                     std::uint64_t(world.particles.liveCount()),
                                     std::uint64_t(world.health.touchingPairs),
                                     std::uint64_t(world.health.touchingWalls),

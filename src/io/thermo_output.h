@@ -11,6 +11,7 @@
 #include "dem/contact_diagnostics.h"
 #include "dem/energy_ledger.h"
 #include "dem/world.h"
+#include "io/output_options.h"
 #include "io/thermo_table.h"
 
 #include <filesystem>
@@ -23,10 +24,10 @@ class ThermoRecorder
 {
   public:
     /// With `resumeBytes` (a restart), continues an existing thermo.csv cut to that size. `ledger`
-    /// (not owned; null: none) adds its columns.
-    explicit ThermoRecorder(const std::filesystem::path& directory,
-                            std::optional<std::uint64_t> resumeBytes = std::nullopt,
-                            const dem::EnergyLedger* ledger = nullptr);
+    /// (not owned; null: none) adds its columns. Times: outputTime(step count, options.dt).
+    ThermoRecorder(const std::filesystem::path& directory, const OutputOptions& options,
+                   std::optional<std::uint64_t> resumeBytes = std::nullopt,
+                   const dem::EnergyLedger* ledger = nullptr);
     /// One row; `contacts`: the world's contacts now (evaluateContacts(world, 0)), for the elastic
     /// energy (their stored energy) when there is no ledger (the ledger keeps that of its last
     /// step, the same).
@@ -35,6 +36,7 @@ class ThermoRecorder
     void close() { table_.close(); }
 
   private:
+    Real dt_; // [s]
     const dem::EnergyLedger* ledger_;
     ThermoTable table_;
 };

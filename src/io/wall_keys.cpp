@@ -152,6 +152,9 @@ dem::Wall readWall(TableReader& t, const dem::World& world)
 {
     dem::Wall wall;
     wall.name = t.requiredString("name");
+    if (wall.name.empty() || wall.name.find_first_of(",\"\n\r") != std::string::npos)
+        t.fail("name", "must be a non-empty name without commas, quotes or line breaks (it is a column of "
+                       "walls.csv and contacts_NNNNNN.csv)");
     const std::string type = t.choice("type", "plane", {"plane", "turntable", "dish", "cylinder", "mesh"});
     wall.material = world.materialId(t.requiredString("material"));
     if (type == "plane")

@@ -8,6 +8,7 @@
 
 #include "dem/world.h"
 #include "io/output_file.h"
+#include "io/output_options.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -21,8 +22,9 @@ class WallLoadRecorder
   public:
     /// Creates DIR/walls.csv; with `resumeBytes` (a restart), continues an existing one cut to
     /// that size.
-    explicit WallLoadRecorder(const std::filesystem::path& directory,
-                              std::optional<std::uint64_t> resumeBytes = std::nullopt);
+    /// Times: outputTime(step count, options.dt).
+    WallLoadRecorder(const std::filesystem::path& directory, const OutputOptions& options,
+                     std::optional<std::uint64_t> resumeBytes = std::nullopt);
     /// One row per wall (world.wallContacts must record loads: setRecordLoads(true)).
     void record(const dem::World& world);
     std::uint64_t size() { return csv_.size(); }
@@ -30,6 +32,7 @@ class WallLoadRecorder
 
   private:
     AppendFile csv_;
+    Real dt_; // [s]
 };
 
 } // namespace veridem::io
