@@ -1,8 +1,10 @@
 // `veridem run` for 3D DEM scenes: read, check the time step (or restore a checkpoint), step with
 // output and checkpoints between steps, stop cleanly on a blow-up (keeping the output written so
 // far) or on SIGINT/SIGTERM (with a checkpoint), print a summary.
+#include "app/rolling_note.h"
 #include "app/run_scene.h"
 #include "app/silenced_stream.h"
+#include "app/time_step_note.h"
 #include "core/error.h"
 #include "dem/time_step.h"
 #include "dist/rank_flow.h"
@@ -16,6 +18,8 @@
 #include "io/outlet_output.h"
 #include "io/particle_flow_keys.h"
 #include "io/particle_output.h"
+#include "io/plausibility.h"
+#include "io/progress_line.h"
 #include "io/region_output.h"
 #include "io/run_control.h"
 #include "io/thermo_output.h"
@@ -41,12 +45,10 @@ void checkTimeStep(const io::DemScene& scene, const RunOptions& options, bool sp
         scene.flow.inserters.empty()
             ? dem::estimateTimeStep(scene.world, scene.characteristicSpeed)
             : dem::estimateTimeStep(io::timeStepProbe(scene.world, scene.flow), scene.characteristicSpeed);
-    if (speak)
-        std::fprintf(stderr,
-                     "veridem: dt = %.4g s; stability limit %.4g s (%s); shortest contact time %.4g s, "
-                     "recommended dt <= tc/50 = %.4g s\n",
-                     scene.dt, estimate.critical, estimate.limitedBy.c_str(), estimate.contactTime,
-                     estimate.recommended);
+    if (speak) // (app/time_step_note.h)
+        std::fprintf(
+            stderr, "%s\n",
+            timeStepNote(scene.dt, estimate, scene.world.particles.size(), scene.world.walls.size()).c_str());
     if (scene.dt > estimate.critical)
     {
         std::ostringstream s;
@@ -64,71 +66,6 @@ void checkTimeStep(const io::DemScene& scene, const RunOptions& options, bool sp
             "veridem: warning: dt is more than tc/20: contacts are resolved by fewer than 20 steps\n");
 }
 
-/// The scene-file name of a rolling model (`rolling_model`) and its class in Ai et al. (2011).
-const char* rollingModelName(dem::RollingModel model)
-{
-    switch (model)
-    {
-    case dem::RollingModel::None:
-        return "none";
-    case dem::RollingModel::ConstantTorque:
-        return "constant_torque, type A, w relative to the partner";
-    case dem::RollingModel::Epsd:
-        return "epsd, type C";
-    case dem::RollingModel::Viscous:
-        return "viscous, type B";
-    case dem::RollingModel::ConstantTorqueAbsolute:
-        return "constant_torque_absolute, type A, the particle's own w";
-    }
-    return "unknown";
-}
-
-/// Prints each material's rolling model and its friction in both conventions (length and
-/// dimensionless) for the radii present, so the two are never confused; for the viscous model
-/// its coefficient c_r.
-void printRollingFrictionConversion(const dem::World& world)
-{
-    for (std::uint32_t m = 0; m < world.materials.size(); ++m)
-    {
-        const dem::Material& material = world.materials[m];
-        if (material.rollingModel == dem::RollingModel::None)
-            continue;
-        Real smallest = 0, largest = 0;
-        for (std::size_t i = 0; i < world.particles.size(); ++i)
-            if (world.particles.material[i] == m)
-            {
-                const Real r = world.particles.radius[i];
-                smallest = smallest == 0 ? r : std::fmin(smallest, r);
-                largest = std::fmax(largest, r);
-            }
-        if (largest == 0)
-            continue;
-        const char* model = rollingModelName(material.rollingModel);
-        if (material.rollingModel == dem::RollingModel::Viscous)
-            std::fprintf(stderr,
-                         "veridem: material '%s': rolling friction (%s) c_r = %.4g s/m: torque -c_r Fn R_r^2 "
-                         "w_rel, R_r = %.4g m (wall) to %.4g m (two spheres of R = %.4g m)\n",
-                         material.name.c_str(), model, material.rollingViscousCoefficient, largest,
-                         smallest / 2, smallest);
-        else if (material.rollingFrictionLength > 0)
-            std::fprintf(
-                stderr,
-                "veridem: material '%s': rolling friction (%s) mu_r = %.4g m = mu_r' * R with mu_r' = "
-                "%.4g (R = %.4g m) to %.4g (R = %.4g m) against a wall\n",
-                material.name.c_str(), model, material.rollingFrictionLength,
-                material.rollingFrictionLength / largest, largest, material.rollingFrictionLength / smallest,
-                smallest);
-        else
-            std::fprintf(
-                stderr,
-                "veridem: material '%s': rolling friction (%s) mu_r' = %.4g -> mu_r = mu_r' * R_r = %.4g m "
-                "(R_r = %.4g m, wall) to %.4g m (two spheres of R = %.4g m, R_r = R/2)\n",
-                material.name.c_str(), model, material.rollingFrictionDimensionless,
-                material.rollingFrictionDimensionless * largest, largest,
-                material.rollingFrictionDimensionless * smallest / 2, smallest);
-    }
-}
-
 } // namespace
 
 int runDemScene(const toml::table& table, const RunOptions& options)
@@ -142,9 +79,10 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         return io::readDemScene(table, options.sceneFile);
     }();
     dem::World& world = scene.world;
+    io::reportPlausibility(scene, options.sceneFile, options.strict, root); // (io/plausibility.h)
     checkTimeStep(scene, options, root);
     if (root)
-        printRollingFrictionConversion(world);
+        printRollingFrictionNote(world); // (app/rolling_note.h)
     const std::uint64_t sceneHash = io::sceneFileHash(options.sceneFile);
 
     const auto totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
@@ -324,7 +262,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     io::stopOnSignals();
 
     const auto start = std::chrono::steady_clock::now();
-    auto lastProgress = start;
+    io::ProgressLine progress(root && options.progress); // (io/progress_line.h)
     const std::uint64_t firstStep = world.stepCount;
     // In runs of steps up to the next output, checkpoint or stop (dem::advance: the bits of step()
     // calls, the kick passes fused), stopping after the first step whose state is not finite or
@@ -408,8 +346,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             closeOutputs();
             if (!root)
                 return signal ? io::kInterruptedBase + signal : 0;
-            if (options.progress)
-                std::fprintf(stderr, "\r%*s\r", 78, "");
+            progress.finish();
             std::fprintf(stderr,
                          "veridem: %s at step %llu of %llu (t = %.9g s); checkpoint written; continue with: "
                          "veridem run %s --restart %s --out %s\n",
@@ -419,20 +356,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                          options.outDir.string().c_str());
             return signal ? io::kInterruptedBase + signal : 0;
         }
-        if (root && options.progress && std::chrono::duration<double>(now - lastProgress).count() > 1)
-        {
-            const double elapsed = std::chrono::duration<double>(now - start).count();
-            if (elapsed > 2)
-            {
-                lastProgress = now;
-                const double fraction = double(s - firstStep) / double(totalSteps - firstStep);
-                std::fprintf(stderr, "\rveridem: %5.1f %%  t = %.4g s  step %llu/%llu  ETA %.0f s   ",
-                             100 * double(s) / double(totalSteps), world.time,
-                             static_cast<unsigned long long>(s), static_cast<unsigned long long>(totalSteps),
-                             elapsed / fraction - elapsed);
-                std::fflush(stderr);
-            }
-        }
+        progress.update(s, totalSteps, world.time);
     }
     closeOutputs();
     const std::uint64_t stepsRun = totalSteps - firstStep;
@@ -443,8 +367,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         options.ranks->sum(counts);
     if (!root)
         return 0;
-    if (options.progress)
-        std::fprintf(stderr, "\r%*s\r", 78, "");
+    progress.finish();
     std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %llu particles, %zu outputs in %s\n",
                 static_cast<unsigned long long>(stepsRun), scene.dt, world.time,
                 static_cast<unsigned long long>(counts[0]), recorder->framesWritten(),
