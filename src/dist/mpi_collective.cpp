@@ -1,14 +1,9 @@
 #include "dist/mpi_collective.h"
 
-#include "exec/wait.h"
-
 #include <climits>
 
-#include <algorithm>
-#include <chrono>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 namespace veridem::dist
 {
@@ -21,39 +16,6 @@ void check(int code, const char* what)
         throw std::runtime_error(std::string("MPI: ") + what + " failed (error code " + std::to_string(code) +
                                  ")");
 }
-/// Waits for `requests` to complete without holding a core: MPI_Testall in a loop (each call also
-/// drives MPI's progress) for the rank's spin budget, then with sleeps that double from 20 us to
-/// kLongestSleep between tests. OpenMPI's blocking calls poll without ever yielding, so a rank
-/// waiting for another took the core that rank needed when the machine had other work (2 ranks
-/// on 2 busy cores: 4 times slower than one process, docs/performance.md). The budget follows
-/// exec::SpinBudget: a wait that ended within kLongestSpin raises it to twice that wait (the
-/// partner was running, a little behind), a longer one drops it to kShortestSpin.
-void waitAll(std::span<MPI_Request> requests, const char* what)
-{
-    constexpr std::int64_t kShortestSpin = 5'000, kLongestSpin = 200'000; // [ns]
-    constexpr auto kLongestSleep = std::chrono::microseconds(500);
-    thread_local exec::SpinBudget budget;
-    const auto start = std::chrono::steady_clock::now();
-    const auto waited = [&] { return (std::chrono::steady_clock::now() - start).count(); };
-    const std::int64_t spin = std::clamp(budget.ns, kShortestSpin, kLongestSpin);
-    auto sleep = std::chrono::microseconds(20);
-    for (;;)
-    {
-        int done = 0;
-        check(MPI_Testall(int(requests.size()), requests.data(), &done, MPI_STATUSES_IGNORE), what);
-        if (done)
-            break;
-        if (waited() < spin)
-            exec::relax();
-        else
-        {
-            std::this_thread::sleep_for(sleep);
-            sleep = std::min(2 * sleep, kLongestSleep);
-        }
-    }
-    budget.update(waited(), kShortestSpin, kLongestSpin);
-}
-
 } // namespace
 
 MpiCollective::MpiCollective(MPI_Comm comm) : comm_(comm)
@@ -64,24 +26,18 @@ MpiCollective::MpiCollective(MPI_Comm comm) : comm_(comm)
 
 void MpiCollective::sum(std::span<std::uint64_t> values) const
 {
-    if (values.empty())
-        return;
-    MPI_Request request;
-    check(MPI_Iallreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UINT64_T, MPI_SUM,
-                         comm_, &request),
-          "MPI_Iallreduce (sum)");
-    waitAll({&request, 1}, "MPI_Iallreduce (sum)");
+    if (!values.empty())
+        check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UINT64_T,
+                            MPI_SUM, comm_),
+              "MPI_Allreduce (sum)");
 }
 
 void MpiCollective::max(std::span<double> values) const
 {
-    if (values.empty())
-        return;
-    MPI_Request request;
-    check(MPI_Iallreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
-                         comm_, &request),
-          "MPI_Iallreduce (max)");
-    waitAll({&request, 1}, "MPI_Iallreduce (max)");
+    if (!values.empty())
+        check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
+                            comm_),
+              "MPI_Allreduce (max)");
 }
 
 Buffers MpiCollective::exchange(Buffers outgoing) const
@@ -92,11 +48,8 @@ Buffers MpiCollective::exchange(Buffers outgoing) const
     std::vector<std::uint64_t> sendCount(size_), receiveCount(size_);
     for (int b = 0; b < size_; ++b)
         sendCount[b] = outgoing[b].size();
-    MPI_Request request;
-    check(MPI_Ialltoall(sendCount.data(), 1, MPI_UINT64_T, receiveCount.data(), 1, MPI_UINT64_T, comm_,
-                        &request),
-          "MPI_Ialltoall (exchange counts)");
-    waitAll({&request, 1}, "MPI_Ialltoall (exchange counts)");
+    check(MPI_Alltoall(sendCount.data(), 1, MPI_UINT64_T, receiveCount.data(), 1, MPI_UINT64_T, comm_),
+          "MPI_Alltoall (exchange counts)");
     const std::vector<std::size_t> incomingBytes(receiveCount.begin(), receiveCount.end());
     return exchangeSized(std::move(outgoing), incomingBytes);
 }
@@ -137,7 +90,7 @@ Buffers MpiCollective::exchangeSized(Buffers outgoing, std::span<const std::size
                         &requests.back()),
               "MPI_Isend (exchange)");
     }
-    waitAll(requests, "MPI_Testall (exchange)");
+    check(MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall (exchange)");
     incoming[rank_] = std::move(outgoing[rank_]);
     return incoming;
 }

@@ -1,6 +1,4 @@
-// The collective operations of dist/collective.h over MPI (built when CMake finds MPI). Every wait
-// is a non-blocking call polled with MPI_Testall, spinning briefly and then sleeping, so a rank
-// waiting for another gives its core up (mpi_collective.cpp, waitAll).
+// The collective operations of dist/collective.h over MPI (built when CMake finds MPI).
 #pragma once
 
 #include "dist/collective.h"
@@ -17,7 +15,7 @@ class MpiCollective final : public Collective
     explicit MpiCollective(MPI_Comm comm = MPI_COMM_WORLD);
     void sum(std::span<std::uint64_t> values) const override;
     void max(std::span<double> values) const override;
-    /// exchange: the counts by MPI_Ialltoall, then exchangeSized: one message per non-empty
+    /// exchange: the counts by MPI_Alltoall, then exchangeSized: one message per non-empty
     /// buffer (MPI_Isend/Irecv).
     Buffers exchange(Buffers outgoing) const override;
     Buffers exchangeSized(Buffers outgoing, std::span<const std::size_t> incomingBytes) const override;
