@@ -4,7 +4,9 @@
 // escapes (another exception, a sanitizer report, a crash, a hang) is a finding.
 #pragma once
 
+#include "core/constants.h"
 #include "core/error.h"
+#include "dem/sphere_box_volume.h"
 #include "fdem/gmsh_reader.h"
 #include "fdem/scene.h"
 #include "io/dem_checkpoint.h"
@@ -12,6 +14,10 @@
 #include "io/scene_limits.h"
 #include "io/toml_reader.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -124,6 +130,37 @@ inline void readMsh(std::string_view text)
     }
     catch (const InputError&)
     {
+    }
+}
+
+/// Region measures: the bytes as little-endian doubles, 11 per case: the sphere's centre and radius,
+/// the box's two corners and a cut x. Cases with a value that is not finite, a coordinate beyond
+/// 1e3 m or a radius outside [1e-9, 1e3] m (no granular scene has them) are skipped. The volume of
+/// the sphere in the box must be finite, within [0, 4/3 pi r^3], and equal the sum of its parts on
+/// either side of the cut to 1e-12 of the sphere's volume (sphere_box_volume.h: rounding only);
+/// anything else aborts. A hang (the cost of the closed form is bounded) is libFuzzer's -timeout.
+inline void measureRegionVolumes(std::string_view bytes)
+{
+    constexpr std::size_t kValues = 11;
+    for (std::size_t at = 0; at + kValues * sizeof(double) <= bytes.size(); at += kValues * sizeof(double))
+    {
+        double v[kValues];
+        std::memcpy(v, bytes.data() + at, sizeof v);
+        if (!std::all_of(v, v + kValues, [](double x) { return std::isfinite(x) && std::abs(x) <= 1e3; }))
+            continue;
+        const double r = v[3];
+        if (!(r >= 1e-9 && r <= 1e3))
+            continue;
+        const Vec3 c{v[0], v[1], v[2]};
+        const Vec3 lo{std::min(v[4], v[7]), std::min(v[5], v[8]), std::min(v[6], v[9])};
+        const Vec3 hi{std::max(v[4], v[7]), std::max(v[5], v[8]), std::max(v[6], v[9])};
+        const double cut = std::clamp(v[10], lo.x, hi.x);
+        const double sphere = 4.0 / 3.0 * kPi * r * r * r;
+        const double whole = dem::sphereBoxVolume(c, r, lo, hi);
+        const double parts = dem::sphereBoxVolume(c, r, lo, {cut, hi.y, hi.z}) +
+                             dem::sphereBoxVolume(c, r, {cut, lo.y, lo.z}, hi);
+        if (!(whole >= 0 && whole <= sphere) || !(std::abs(whole - parts) <= 1e-12 * sphere))
+            std::abort();
     }
 }
 

@@ -4,8 +4,10 @@
 // (dist/rank_gather.h). Reading and changing the state between steps: simulation_access.cpp.
 #include "api/simulation.h"
 
+#include "api/rolling_note.h"
 #include "api/simulation_state.h"
 #include "api/start_notes.h"
+#include "io/plausibility.h"
 
 namespace veridem::api
 {
@@ -59,9 +61,10 @@ Simulation Simulation::fromTable(const toml::table& table, const std::string& na
     }
     io::DemScene& scene = s->scene;
     dem::World& world = scene.world;
+    io::reportPlausibility(scene, name, options.strict, speak); // (io/plausibility.h)
     checkTimeStep(scene, name, options.allowUnstableTimeStep, speak);
     if (speak)
-        printRollingFrictionConversion(world);
+        printRollingFrictionNote(world); // (api/rolling_note.h)
     s->hash = sceneHash(table);
     s->totalSteps = static_cast<std::uint64_t>(std::llround(scene.duration / scene.dt));
     s->outputEvery = std::max<std::uint64_t>(1, std::llround(scene.outputInterval / scene.dt));

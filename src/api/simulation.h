@@ -34,6 +34,7 @@ struct SimulationOptions
                                              // empty: no files are written (checkpoints still can be)
     bool speak = true;                       // start-up notes and warnings on stderr
     bool allowUnstableTimeStep = false;      // run above the stability limit (warned), else refused
+    bool strict = false;                     // the plausibility warnings (io/plausibility.h) are errors
     std::string restartFile;                 // continue from this checkpoint (empty: start afresh)
     const dist::Collective* ranks = nullptr; // the MPI job's ranks (mpirun); null: one process
     std::uint64_t rebalanceEvery = 10;       // exchanges of particles between cuts of the regions

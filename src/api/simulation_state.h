@@ -90,7 +90,8 @@ struct Simulation::State
         const io::MeasurementOptions& measure = scene.measurements;
         const std::filesystem::path& dir = options.outDir;
         recorder.emplace(dir, scene.output, resume ? &*resume : nullptr);
-        thermo.emplace(dir, scene.output, thermoBytes, measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
+        thermo.emplace(dir, scene.output, thermoBytes,
+                       measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
         if (measure.contacts)
             contacts.emplace(dir, scene.output, resume ? resume->frameTimes : std::vector<double>{});
         if (measure.region)

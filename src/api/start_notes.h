@@ -13,9 +13,4 @@ namespace veridem::api
 /// `speak`, prints the time-step line and a warning when contacts get fewer than 20 steps.
 void checkTimeStep(const io::DemScene& scene, const std::string& sceneName, bool allowUnstable, bool speak);
 
-/// Prints each material's rolling model and its friction in both conventions (length and
-/// dimensionless) for the radii present, so the two are never confused; for the viscous model its
-/// coefficient c_r.
-void printRollingFrictionConversion(const dem::World& world);
-
 } // namespace veridem::api

@@ -1,17 +1,22 @@
 // veridem: the command-line program.
-//   veridem run SCENE [--out DIR] [--threads N] [--restart FILE] [--stop-at-step N]
+//   veridem run SCENE [--out DIR] [--threads N] [--restart FILE] [--stop-at-step N] [--strict]
 //                                                  run a scene file (DEM 3D or FEM/DEM 2D)
 //   veridem verify [--list] [--case NAME]... [--label L]... [--json FILE] [--report DIR] [--jobs N]
+//   veridem --version                             version, commit, build type, kernel, MPI
+// A bad command line ends like any bad input: one line "veridem: error: ..." naming the option and
+// what it accepts, exit status 2.
 #include "app/mpi_launch.h"
 #include "app/run_scene.h"
 #include "app/silenced_stream.h"
 #include "core/error.h"
+#include "exec/isa.h"
 #include "exec/thread_pool.h"
 #include "io/toml_reader.h"
 #include "runner.h"
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -29,6 +34,48 @@
 
 namespace
 {
+
+/// A CLI11 check that the value is a whole number from `lowest` to `highest` (no bound above if
+/// `highest` is 0), saying so in words: "must be a whole number of threads from 1 to 256 (got
+/// '0')".
+CLI::Validator wholeNumber(std::uint64_t lowest, std::uint64_t highest, const std::string& what)
+{
+    const std::string range = "a whole number of " + what + " from " + std::to_string(lowest) +
+                              (highest ? " to " + std::to_string(highest) : " up");
+    return CLI::Validator(
+        [=](std::string& text)
+        {
+            std::uint64_t value = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, problem] = std::from_chars(text.data(), end, value);
+            if (problem != std::errc() || stop != end || value < lowest || (highest && value > highest))
+                return "must be " + range + " (got '" + text + "')";
+            return std::string();
+        },
+        range);
+}
+
+/// `veridem --version`: the version, the commit it was configured from, the build type, the
+/// instruction set of the contact kernel on this CPU and whether MPI was built in.
+std::string versionText()
+{
+#ifdef VERIDEM_HAVE_MPI
+    const char* mpi = "on";
+#else
+    const char* mpi = "off";
+#endif
+    std::string isa;
+    try
+    {
+        isa = veridem::exec::isaName();
+    }
+    catch (const std::exception& e) // (a bad VERIDEM_KERNEL)
+    {
+        isa = e.what();
+    }
+    return std::string("veridem ") + VERIDEM_VERSION + "\ncommit " + VERIDEM_GIT_COMMIT +
+           " (when configured)\nbuild " + VERIDEM_BUILD_TYPE + "\ninstruction set " + isa + "\nMPI " + mpi;
+}
 
 /// Refuses a --label that no case carries (a typo would otherwise select nothing and pass).
 void checkLabels(const std::vector<std::string>& labels)
@@ -102,6 +149,7 @@ int main(int argc, char** argv)
     }
     CLI::App app{"veridem: verified DEM and FEM/DEM contact physics (SI units throughout)"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", versionText());
 
     veridem::app::RunOptions runOptions;
     std::string outDir = "out";
@@ -120,7 +168,9 @@ int main(int argc, char** argv)
     auto* stopOption = run->add_option("--stop-at-step", stopAtStep,
                                        "stop after this step (counted from the scene's start), writing "
                                        "DIR/checkpoint.bin as on SIGINT; exit status 0")
-                           ->check(CLI::PositiveNumber);
+                           ->check(wholeNumber(1, 0, "steps"));
+    run->add_flag("--strict", runOptions.strict,
+                  "treat the plausibility warnings (units, positions: docs/scene-format.md) as errors");
     // Default: every CPU this process may use. A waiting thread blocks after a few microseconds
     // (exec/thread_pool.h), so a second thread does not slow a run down on a busy machine.
     // As one of several MPI ranks on a node whose CPUs it may all use (not bound to some): its share.
@@ -132,7 +182,7 @@ int main(int argc, char** argv)
                     "threads of the DEM loops (default: the CPUs this process may run on; the same "
                     "results on any count)")
         ->capture_default_str()
-        ->check(CLI::Range(1, veridem::exec::kMaxThreads));
+        ->check(wholeNumber(1, veridem::exec::kMaxThreads, "threads"));
 
     veridem::verify::RunRequest verifyRequest;
     bool list = false;
@@ -148,9 +198,21 @@ int main(int argc, char** argv)
     verify
         ->add_option("--jobs", verifyRequest.jobs,
                      "cases run at once, each on a thread of its own (default: one per core)")
-        ->check(CLI::Range(0, 256));
+        ->check(wholeNumber(0, 256, "cases (0: one per core)"));
 
-    CLI11_PARSE(app, argc, argv);
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::ParseError& e)
+    {
+        if (e.get_exit_code() == 0) // --help, --version
+            return app.exit(e);
+        std::string message = e.what();
+        if (!dynamic_cast<const CLI::ValidationError*>(&e)) // (a validator's message says the range)
+            message += " (`veridem run --help` and `veridem verify --help` list the options)";
+        return fail(launch.get(), 2, "error", message.c_str());
+    }
 
     try
     {

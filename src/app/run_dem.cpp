@@ -5,6 +5,7 @@
 #include "app/run_scene.h"
 #include "core/error.h"
 #include "exec/thread_pool.h"
+#include "io/progress_line.h"
 #include "io/run_control.h"
 
 #include <chrono>
@@ -21,6 +22,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     api::SimulationOptions simulationOptions;
     simulationOptions.outDir = options.outDir;
     simulationOptions.allowUnstableTimeStep = options.allowUnstableTimeStep;
+    simulationOptions.strict = options.strict;
     simulationOptions.restartFile = options.restartFile;
     simulationOptions.ranks = options.ranks;
     simulationOptions.rebalanceEvery = options.rebalanceEvery;
@@ -32,7 +34,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
     io::stopOnSignals();
 
     const auto start = std::chrono::steady_clock::now();
-    auto lastProgress = start;
+    io::ProgressLine progress(root && options.progress); // (io/progress_line.h)
     const std::uint64_t firstStep = sim.step();
     const std::uint64_t end = options.stopAtStep ? std::min(*options.stopAtStep, totalSteps) : totalSteps;
     // In pieces of about a second, between which the progress line is drawn: advance() asks
@@ -65,8 +67,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
             sim.close();
             if (!root)
                 return signal ? io::kInterruptedBase + signal : 0;
-            if (options.progress)
-                std::fprintf(stderr, "\r%*s\r", 78, "");
+            progress.finish();
             const std::uint64_t s = sim.step();
             std::fprintf(stderr,
                          "veridem: %s at step %llu of %llu (t = %.9g s); checkpoint written; continue with: "
@@ -77,22 +78,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                          options.outDir.string().c_str());
             return signal ? io::kInterruptedBase + signal : 0;
         }
-        const auto now = std::chrono::steady_clock::now();
-        if (root && options.progress && std::chrono::duration<double>(now - lastProgress).count() > 1)
-        {
-            const double elapsed = std::chrono::duration<double>(now - start).count();
-            if (elapsed > 2)
-            {
-                lastProgress = now;
-                const std::uint64_t s = sim.step();
-                const double fraction = double(s - firstStep) / double(totalSteps - firstStep);
-                std::fprintf(stderr, "\rveridem: %5.1f %%  t = %.4g s  step %llu/%llu  ETA %.0f s   ",
-                             100 * double(s) / double(totalSteps), sim.time(),
-                             static_cast<unsigned long long>(s), static_cast<unsigned long long>(totalSteps),
-                             elapsed / fraction - elapsed);
-                std::fflush(stderr);
-            }
-        }
+        progress.update(sim.step(), totalSteps, sim.time());
     }
     sim.close();
     const std::uint64_t stepsRun = sim.step() - firstStep;
@@ -104,8 +90,7 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         options.ranks->sum(counts);
     if (!root)
         return 0;
-    if (options.progress)
-        std::fprintf(stderr, "\r%*s\r", 78, "");
+    progress.finish();
     std::printf("veridem: %llu steps of %.4g s (t = %.6g s), %llu particles, %zu outputs in %s\n",
                 static_cast<unsigned long long>(stepsRun), sim.dt(), sim.time(),
                 static_cast<unsigned long long>(counts[0]), sim.outputsWritten(),

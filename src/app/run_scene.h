@@ -20,6 +20,7 @@ struct RunOptions
     std::filesystem::path outDir;            // created if missing
     bool progress = true;                    // progress with ETA on stderr
     bool allowUnstableTimeStep = false;      // --force-dt: run above the stability limit (warned)
+    bool strict = false;                     // --strict: the plausibility warnings are errors
     std::string restartFile;                 // --restart: continue from this checkpoint (empty: none)
     std::optional<std::uint64_t> stopAtStep; // --stop-at-step: stop after this step (counted from
                                              // the scene's start) with a checkpoint, as on SIGINT

@@ -12,73 +12,14 @@ namespace veridem::dem
 namespace
 {
 
-/// Gauss-Legendre nodes and weights on [-1, 1] (Newton's method on P_n from the Chebyshev-like
-/// first guesses, to full precision).
-struct GaussLegendre
-{
-    std::array<Real, kSphereBoxNodes> node{}, weight{};
-    GaussLegendre()
-    {
-        constexpr int n = kSphereBoxNodes;
-        for (int k = 0; k < n; ++k)
-        {
-            Real x = std::cos(kPi * (k + 0.75) / (n + 0.5));
-            Real derivative = 1;
-            for (int iteration = 0; iteration < 100; ++iteration)
-            {
-                Real p0 = 1, p1 = x; // P_0, P_1
-                for (int m = 2; m <= n; ++m)
-                {
-                    const Real p2 = ((2 * m - 1) * x * p1 - (m - 1) * p0) / m;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                derivative = n * (x * p1 - p0) / (x * x - 1);
-                const Real next = x - p1 / derivative;
-                const bool done = std::abs(next - x) <= 1e-16;
-                x = next;
-                if (done)
-                    break;
-            }
-            node[static_cast<std::size_t>(k)] = x;
-            weight[static_cast<std::size_t>(k)] = 2 / ((1 - x * x) * derivative * derivative);
-        }
-    }
-};
-
-const GaussLegendre& gaussLegendre()
-{
-    static const GaussLegendre rule;
-    return rule;
-}
-
-/// Gauss-Legendre of f over [a, b].
-template <class F> Real gaussLegendreOn(const F& f, Real a, Real b)
-{
-    const GaussLegendre& rule = gaussLegendre();
-    Real sum = 0;
-    for (std::size_t q = 0; q < rule.node.size(); ++q)
-        sum += rule.weight[q] * f(a + 0.5 * (b - a) * (1 + rule.node[q]));
-    return 0.5 * (b - a) * sum;
-}
-
-/// The integral of f over [a, b], `whole` its Gauss-Legendre value: accepted when the two halves'
-/// sum agrees with it to `tolerance`, else each half to half the tolerance (at most 40 levels).
-template <class F> Real adaptiveIntegral(const F& f, Real a, Real b, Real whole, Real tolerance, int depth)
-{
-    const Real middle = 0.5 * (a + b);
-    const Real left = gaussLegendreOn(f, a, middle), right = gaussLegendreOn(f, middle, b);
-    if (std::abs(left + right - whole) <= tolerance || depth >= 40)
-        return left + right;
-    return adaptiveIntegral(f, a, middle, left, 0.5 * tolerance, depth + 1) +
-           adaptiveIntegral(f, middle, b, right, 0.5 * tolerance, depth + 1);
-}
-
-/// The integral of sqrt(rho^2 - x^2) dx from -rho to x (|x| <= rho) [m^2], up to a constant.
+/// The integral of sqrt(rho^2 - x^2) dx from -rho to x (|x| <= rho) [m^2], up to a constant:
+/// (x h + rho^2 asin(x / rho)) / 2 with h = sqrt(rho^2 - x^2), the arcsine taken as atan2(x, h) of
+/// the same h: the sum's derivative in h vanishes (x - rho^2 x / (x^2 + h^2) = 0), so the rounding
+/// of h near x = +-rho cancels, where asin of a rounded ratio near 1 would be off by ~1e-8.
 Real halfChordIntegral(Real rho, Real x)
 {
-    const Real ratio = std::clamp(x / rho, Real(-1), Real(1));
-    return 0.5 * (x * std::sqrt(std::max(Real(0), rho * rho - x * x)) + rho * rho * std::asin(ratio));
+    const Real h = std::sqrt(std::max(Real(0), rho * rho - x * x));
+    return 0.5 * (x * h + rho * rho * std::atan2(x, h));
 }
 
 } // namespace
@@ -112,6 +53,100 @@ Real diskRectangleArea(Real rho, Real cx, Real cy, Real x0, Real x1, Real y0, Re
            diskQuadrantArea(rho, X0, Y0);
 }
 
+namespace
+{
+
+/// The volume [m^3] of the sphere of radius r [m] (centre at the origin) where z >= c, |c| < r:
+/// the cap pi (r - c)^2 (2r + c) / 3.
+Real capVolume(Real r, Real c)
+{
+    return kPi * (r - c) * (r - c) * (2 * r + c) / 3;
+}
+
+/// integral of asin(a / sqrt(r^2 - z^2)) dz [m] (0 <= a < r [m], z^2 <= r^2 - a^2), up to a
+/// constant (the header derives it), with every arcsine as an atan2 of the one
+/// q = sqrt(r^2 - a^2 - z^2): asin(a / rho) = atan2(a, q), asin(z / sqrt(r^2 - a^2)) = atan2(z, q).
+/// The sum's derivative in q is q^2 / (a z), zero at the ends of the range (q -> 0), so the
+/// rounding of q there cancels (asin of a rounded ratio near 1 would be off by ~1e-8).
+Real arcsinePrimitive(Real r, Real a, Real z)
+{
+    if (!(a > 0))
+        return 0;
+    const Real q = std::sqrt(std::max(Real(0), r * r - a * a - z * z));
+    return z * std::atan2(a, q) + a * std::atan2(z, q) - r * std::atan2(a * z, r * q);
+}
+
+/// The volume [m^3] of the sphere of radius r where y >= b and z >= c, 0 <= b < r, |c| < r.
+Real wedgeVolume(Real r, Real b, Real c)
+{
+    const Real top = std::sqrt(std::max(Real(0), r * r - b * b)); // the circle reaches y >= b below
+    const Real bottom = std::max(c, -top);
+    if (!(bottom < top))
+        return 0;
+    // Phi(z) = pi - 2 asin(b / rho(z)).
+    const Real S =
+        r * (kPi * (top - bottom) - 2 * (arcsinePrimitive(r, b, top) - arcsinePrimitive(r, b, bottom)));
+    const Real rhoB = top, rhoC = std::sqrt(std::max(Real(0), r * r - c * c));
+    const Real faceB = diskQuadrantArea(rhoB, rhoB, -c); // on y = b: z >= c
+    const Real faceC = diskQuadrantArea(rhoC, rhoC, -b); // on z = c: y >= b
+    return std::max(Real(0), (r * S - b * faceB - c * faceC) / 3);
+}
+
+/// The volume [m^3] of the sphere of radius r where x >= a, y >= b and z >= c, 0 <= a, b < r,
+/// |c| < r.
+Real cornerVolume(Real r, Real a, Real b, Real c)
+{
+    const Real top = std::sqrt(std::max(Real(0), r * r - a * a - b * b));
+    const Real bottom = std::max(c, -top);
+    if (!(bottom < top))
+        return 0;
+    // Phi(z) = pi/2 - asin(a / rho(z)) - asin(b / rho(z)).
+    const Real S =
+        r * (0.5 * kPi * (top - bottom) - (arcsinePrimitive(r, a, top) - arcsinePrimitive(r, a, bottom)) -
+             (arcsinePrimitive(r, b, top) - arcsinePrimitive(r, b, bottom)));
+    const Real rhoA = std::sqrt(std::max(Real(0), r * r - a * a));
+    const Real rhoB = std::sqrt(std::max(Real(0), r * r - b * b));
+    const Real rhoC = std::sqrt(std::max(Real(0), r * r - c * c));
+    const Real faceA = diskQuadrantArea(rhoA, -b, -c), faceB = diskQuadrantArea(rhoB, -a, -c),
+               faceC = diskQuadrantArea(rhoC, -a, -b);
+    return std::max(Real(0), (r * S - a * faceA - b * faceB - c * faceC) / 3);
+}
+
+/// G: the volume [m^3] of the sphere of radius r (centre at the origin) where x_k >= bounds[k] for
+/// the `count` (<= 3) coordinates listed, any bounds [m]. Reflects negative bounds (at most three
+/// levels deep; the header).
+Real orthantVolume(Real r, std::array<Real, 3> bounds, int count)
+{
+    int kept = 0;
+    for (int k = 0; k < count; ++k)
+    {
+        const Real bound = bounds[static_cast<std::size_t>(k)];
+        if (bound >= r)
+            return 0;
+        if (bound > -r) // (a bound at or below -r does not cut the sphere)
+            bounds[static_cast<std::size_t>(kept++)] = bound;
+    }
+    // The non-negative bounds first.
+    std::stable_partition(bounds.begin(), bounds.begin() + kept, [](Real b) { return b >= 0; });
+    const int nonNegative =
+        static_cast<int>(std::count_if(bounds.begin(), bounds.begin() + kept, [](Real b) { return b >= 0; }));
+    if (kept == 0)
+        return (4.0 / 3.0) * kPi * r * r * r;
+    if (kept == 1)
+        return capVolume(r, bounds[0]);
+    if (nonNegative < kept - 1) // two negative bounds: reflect the last
+    {
+        const Real last = bounds[static_cast<std::size_t>(kept - 1)];
+        std::array<Real, 3> reflected = bounds;
+        reflected[static_cast<std::size_t>(kept - 1)] = -last;
+        return orthantVolume(r, bounds, kept - 1) - orthantVolume(r, reflected, kept);
+    }
+    return kept == 2 ? wedgeVolume(r, bounds[0], bounds[1])
+                     : cornerVolume(r, bounds[0], bounds[1], bounds[2]);
+}
+
+} // namespace
+
 Real sphereBoxVolume(const Vec3& c, Real r, const Vec3& lo, const Vec3& hi)
 {
     if (c.x - r >= lo.x && c.x + r <= hi.x && c.y - r >= lo.y && c.y + r <= hi.y && c.z - r >= lo.z &&
@@ -120,50 +155,18 @@ Real sphereBoxVolume(const Vec3& c, Real r, const Vec3& lo, const Vec3& hi)
     if (c.x + r <= lo.x || c.x - r >= hi.x || c.y + r <= lo.y || c.y - r >= hi.y || c.z + r <= lo.z ||
         c.z - r >= hi.z)
         return 0;
-    const Real za = std::max(lo.z, c.z - r), zb = std::min(hi.z, c.z + r);
-    // Breakpoints: the heights where the section's circle passes through an edge's line or a corner.
-    std::array<Real, 2 + 2 * 8> cut{};
-    std::size_t count = 0;
-    cut[count++] = za;
-    const Real dx[2] = {lo.x - c.x, hi.x - c.x}, dy[2] = {lo.y - c.y, hi.y - c.y};
-    const auto addDistance = [&](Real d2)
-    {
-        if (d2 > 0 && d2 < r * r)
-        {
-            const Real h = std::sqrt(r * r - d2);
-            for (const Real z : {c.z - h, c.z + h})
-                if (z > za && z < zb)
-                    cut[count++] = z;
-        }
-    };
-    for (int a = 0; a < 2; ++a)
-    {
-        addDistance(dx[a] * dx[a]);
-        addDistance(dy[a] * dy[a]);
-        for (int b = 0; b < 2; ++b)
-            addDistance(dx[a] * dx[a] + dy[b] * dy[b]);
-    }
-    cut[count++] = zb;
-    std::sort(cut.begin(), cut.begin() + static_cast<std::ptrdiff_t>(count));
-    // Each piece adaptively: Gauss-Legendre on [t0, t1] against the sum over its halves, to an
-    // absolute tolerance of kSphereBoxTolerance of the sphere's volume.
-    const Real tolerance = kSphereBoxTolerance * (4.0 / 3.0) * kPi * r * r * r;
+    // Inclusion-exclusion over the eight corners, relative to the centre.
+    const Real xs[2] = {lo.x - c.x, hi.x - c.x}, ys[2] = {lo.y - c.y, hi.y - c.y},
+               zs[2] = {lo.z - c.z, hi.z - c.z};
     Real volume = 0;
-    for (std::size_t k = 0; k + 1 < count; ++k)
-    {
-        const Real z0 = cut[k], length = cut[k + 1] - z0;
-        if (!(length > 0))
-            continue;
-        // z = z0 + L (3t^2 - 2t^3), dz = 6 L t (1 - t) dt.
-        const auto integrand = [&](Real t)
-        {
-            const Real z = z0 + length * t * t * (3 - 2 * t);
-            const Real rho = std::sqrt(std::max(Real(0), r * r - (z - c.z) * (z - c.z)));
-            return 6 * length * t * (1 - t) * diskRectangleArea(rho, c.x, c.y, lo.x, hi.x, lo.y, hi.y);
-        };
-        volume += adaptiveIntegral(integrand, 0, 1, gaussLegendreOn(integrand, 0, 1), tolerance, 0);
-    }
-    return volume;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            for (int k = 0; k < 2; ++k)
+            {
+                const Real sign = (i + j + k) % 2 == 0 ? 1 : -1;
+                volume += sign * orthantVolume(r, {xs[i], ys[j], zs[k]}, 3);
+            }
+    return std::clamp(volume, Real(0), (4.0 / 3.0) * kPi * r * r * r);
 }
 
 } // namespace veridem::dem

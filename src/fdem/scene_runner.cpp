@@ -7,6 +7,7 @@
 #include "fdem/time_step.h"
 #include "io/checkpoint_file.h"
 #include "io/output_options.h"
+#include "io/progress_line.h"
 #include "io/run_control.h"
 
 #include <algorithm>
@@ -113,7 +114,7 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
     };
     io::stopOnSignals();
     const auto wallStart = std::chrono::steady_clock::now();
-    auto lastReport = wallStart;
+    io::ProgressLine progressLine(progress, stderr, -1, "fdem2d"); // (io/progress_line.h)
     for (std::uint64_t i = firstStep + 1; i <= totalSteps; ++i)
     {
         world.step();
@@ -132,8 +133,7 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
         if (stop && i < totalSteps)
         {
             output.finish();
-            if (progress)
-                std::fprintf(stderr, "\n");
+            progressLine.finish();
             std::fprintf(stderr,
                          "veridem: %s at step %llu of %llu (t = %.9g s); checkpoint written; continue with: "
                          "veridem run %s --restart %s --out %s\n",
@@ -143,24 +143,11 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
                          outDir.string().c_str());
             return signal ? io::kInterruptedBase + signal : 0;
         }
-        if (progress && (i & 1023) == 0)
-        {
-            const auto now = std::chrono::steady_clock::now();
-            if (now - lastReport > std::chrono::seconds(2))
-            {
-                lastReport = now;
-                const double elapsed = std::chrono::duration<double>(now - wallStart).count();
-                const double fraction =
-                    static_cast<double>(i - firstStep) / static_cast<double>(totalSteps - firstStep);
-                std::fprintf(stderr, "\rt = %.4g s (%.1f %%), ETA %.0f s   ", world.time() - start,
-                             100 * static_cast<double>(i) / static_cast<double>(totalSteps),
-                             elapsed * (1 - fraction) / fraction);
-            }
-        }
+        if ((i & 1023) == 0)
+            progressLine.update(i, totalSteps, world.time() - start);
     }
     output.finish();
-    if (progress)
-        std::fprintf(stderr, "\n");
+    progressLine.finish();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     std::printf("fdem2d: %llu steps in %.2f s (%.3g element-steps/s); output in %s\n",
                 static_cast<unsigned long long>(totalSteps - firstStep), wall,

@@ -77,6 +77,39 @@ TEST(MeshWall, WeldsAndFindsAdjacency)
     EXPECT_NE(report.warnings[0].find("open boundary of 4 edges"), std::string::npos);
 }
 
+TEST(MeshWall, WeldsAFloat32SeamAndSaysWhereTheOpenEdgesAre)
+{
+    // The square's second triangle repeats the shared corners as a float32 file would after a
+    // transform: off by 1e-8 m (1e-8 of the 1.4 m diagonal, below kWeldTolerance = 1e-6). Exact
+    // welding would leave 6 open edges (two separate triangles); within the tolerance the square
+    // has 4, along its rim, which the warning locates: from (0, 0, 0) to (1, 1, 0).
+    std::vector<Vec3> c = square();
+    for (std::size_t k = 3; k < 6; ++k)
+        if (c[k].x == c[k].y) // the shared corners (0, 0, 0) and (1, 1, 0)
+            c[k] = c[k] + Vec3{1e-8, -1e-8, 1e-8};
+    MeshReport report;
+    const TriangleMesh m = buildTriangleMesh(c, "seam.stl", report);
+    EXPECT_EQ(m.vertices.size(), 4u);
+    EXPECT_EQ(m.edges.size(), 5u);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_NE(
+        report.warnings[0].find("seam.stl: open boundary of 4 edges, e.g. the edge of triangle 0 from ("),
+        std::string::npos)
+        << report.warnings[0];
+    EXPECT_NE(report.warnings[0].find("the open edges lie within (0, 0, 0) to (1, 1, 0) m"),
+              std::string::npos)
+        << report.warnings[0];
+    // Corners 1e-5 apart (above the tolerance) stay apart: 6 open edges.
+    c = square();
+    for (std::size_t k = 3; k < 6; ++k)
+        if (c[k].x == c[k].y)
+            c[k] = c[k] + Vec3{1e-5, 0, 0};
+    MeshReport apart;
+    buildTriangleMesh(c, "apart.stl", apart);
+    ASSERT_EQ(apart.warnings.size(), 1u);
+    EXPECT_NE(apart.warnings[0].find("open boundary of 6 edges"), std::string::npos) << apart.warnings[0];
+}
+
 TEST(MeshWall, DegenerateTriangleIsRefusedWithItsIndex)
 {
     std::vector<Vec3> c = square();

@@ -1,6 +1,7 @@
 # Runs COMMAND (a ;-list) and passes if it ends within TIMEOUT seconds with an exit status in
-# [1, 127] and a stderr whose last line matches REGEX (the one-line error of a refused input).
-#   cmake -DCOMMAND=... -DREGEX=... [-DTIMEOUT=s] -P expect_error.cmake
+# [1, 127] (exactly STATUS if given) and a stderr whose last line matches REGEX (the one-line error
+# of a refused input).
+#   cmake -DCOMMAND=... -DREGEX=... [-DTIMEOUT=s] [-DSTATUS=n] -P expect_error.cmake
 if(NOT TIMEOUT)
   set(TIMEOUT 10)
 endif()
@@ -12,6 +13,9 @@ if(NOT rc MATCHES "^[0-9]+$")
 endif()
 if(rc EQUAL 0 OR rc GREATER 127)
   message(FATAL_ERROR "exit status ${rc}, expected 1..127\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(DEFINED STATUS AND NOT rc EQUAL STATUS)
+  message(FATAL_ERROR "exit status ${rc}, expected ${STATUS}\nstderr: ${err}")
 endif()
 if(NOT last MATCHES "${REGEX}")
   message(FATAL_ERROR "the error line\n  ${last}\ndoes not match\n  ${REGEX}")

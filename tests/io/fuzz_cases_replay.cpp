@@ -1,6 +1,6 @@
 // Replays every input kept in tests/io/fuzz_cases/TARGET/ through the fuzzed readers
-// (fuzz/fuzz_targets.h): inputs that once crashed a fuzz target or reached undefined behaviour,
-// and the bad inputs of the hardening tests. Each must end with a refusal or a scene, never a
+// (fuzz/fuzz_targets.h) and the region measures: inputs that once crashed a fuzz target or reached undefined
+// behaviour, and the bad inputs of the hardening tests. Each must end with a refusal or a scene, never a
 // crash (under the asan preset, never a sanitizer report).
 #include "fuzz_targets.h"
 
@@ -67,4 +67,9 @@ TEST(FuzzCases, Checkpoint3d)
 TEST(FuzzCases, Msh)
 {
     EXPECT_GT(replay("msh", veridem::fuzz::readMsh), 0u);
+}
+
+TEST(FuzzCases, Region)
+{
+    EXPECT_GT(replay("region", veridem::fuzz::measureRegionVolumes), 0u);
 }

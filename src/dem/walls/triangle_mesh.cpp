@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 #include <tuple>
 
 namespace veridem::dem
@@ -13,13 +15,28 @@ namespace veridem::dem
 namespace
 {
 
-struct VertexOrder
+/// x with 3 significant digits.
+std::string number(Real x)
 {
-    bool operator()(const Vec3& a, const Vec3& b) const
-    {
-        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-    }
-};
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return text;
+}
+
+/// "(x, y, z)" [m].
+std::string point(const Vec3& x)
+{
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", x.x, x.y, x.z);
+    return text;
+}
+
+/// "the edge of triangle T from (..) to (..)" for edge g.
+std::string describeEdge(const TriangleMesh& m, std::size_t g)
+{
+    return "the edge of triangle " + std::to_string(m.edgeUsers[m.edgeStart[g]] / 3) + " from " +
+           point(m.vertices[m.edges[g][0]]) + " to " + point(m.vertices[m.edges[g][1]]);
+}
 
 /// Edges of the mesh and their users (triangle * 3 + local edge), and each triangle's edge ids.
 void buildEdges(TriangleMesh& m)
@@ -165,28 +182,59 @@ TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::stri
     if (corners.empty() || corners.size() % 3 != 0)
         throw InputError(source + ": the mesh has no triangles");
     TriangleMesh m;
-    std::map<Vec3, std::uint32_t, VertexOrder> weld;
     m.lower = m.upper = corners[0];
+    Real farthest = 0; // the largest coordinate's magnitude [m]
     for (const Vec3& c : corners)
     {
         if (!isFinite(c))
             throw InputError(source + ": a vertex coordinate is not finite");
         m.lower = {std::fmin(m.lower.x, c.x), std::fmin(m.lower.y, c.y), std::fmin(m.lower.z, c.z)};
         m.upper = {std::fmax(m.upper.x, c.x), std::fmax(m.upper.y, c.y), std::fmax(m.upper.z, c.z)};
+        farthest = std::fmax(farthest, std::fmax(std::fabs(c.x), std::fmax(std::fabs(c.y), std::fabs(c.z))));
     }
     m.size = length(m.upper - m.lower);
     const Real minTwiceArea = 1e-12 * m.size * m.size;
+    // Welding: a corner joins the first vertex (in file order) within `tolerance` in every
+    // coordinate, found on a grid of that cell size (the 27 cells around it).
+    const Real tolerance = kWeldTolerance * std::fmax(m.size, farthest);
+    std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> weld;
+    const auto cellOf = [&](const Vec3& x)
+    {
+        return std::array<std::int64_t, 3>{std::llround(x.x / tolerance), std::llround(x.y / tolerance),
+                                           std::llround(x.z / tolerance)};
+    };
+    const auto weldedIndex = [&](const Vec3& x)
+    {
+        const std::array<std::int64_t, 3> cell = cellOf(x);
+        std::uint32_t found = TriangleMesh::kNone;
+        for (std::int64_t i = -1; i <= 1; ++i)
+            for (std::int64_t j = -1; j <= 1; ++j)
+                for (std::int64_t k = -1; k <= 1; ++k)
+                {
+                    const auto near = weld.find({cell[0] + i, cell[1] + j, cell[2] + k});
+                    if (near == weld.end())
+                        continue;
+                    for (const std::uint32_t v : near->second)
+                    {
+                        const Vec3 d = m.vertices[v] - x;
+                        if (std::fabs(d.x) <= tolerance && std::fabs(d.y) <= tolerance &&
+                            std::fabs(d.z) <= tolerance)
+                            found = std::min(found, v);
+                    }
+                }
+        if (found == TriangleMesh::kNone)
+        {
+            found = static_cast<std::uint32_t>(m.vertices.size());
+            m.vertices.push_back(x);
+            weld[cell].push_back(found);
+        }
+        return found;
+    };
     for (std::size_t t = 0; t < corners.size() / 3; ++t)
     {
         std::array<std::uint32_t, 3> tri{};
         for (int c = 0; c < 3; ++c)
-        {
-            const auto [it, added] =
-                weld.try_emplace(corners[3 * t + c], static_cast<std::uint32_t>(m.vertices.size()));
-            if (added)
-                m.vertices.push_back(corners[3 * t + c]);
-            tri[c] = it->second;
-        }
+            tri[c] = weldedIndex(corners[3 * t + c]);
         const Vec3 n =
             cross(m.vertices[tri[1]] - m.vertices[tri[0]], m.vertices[tri[2]] - m.vertices[tri[0]]);
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(length(n) > minTwiceArea))
@@ -212,27 +260,37 @@ TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::stri
         m.bounds[t] = {a, m.normals[t], m.inward[t], dot(a - m.vertices[m.triangles[t][1]], m.inward[t][1])};
     }
     buildEdges(m);
-    std::size_t open = 0, nonManifold = 0, example = 0;
+    std::size_t open = 0, nonManifold = 0, example = 0, firstOpen = 0;
     for (std::size_t g = 0; g < m.edges.size(); ++g)
     {
         const std::uint32_t users = m.edgeStart[g + 1] - m.edgeStart[g];
-        if (users == 1)
-            ++open;
+        if (users == 1 && open++ == 0)
+            firstOpen = g;
         else if (users > 2 && nonManifold++ == 0)
             example = g;
     }
     if (open > 0)
-        report.warnings.push_back(source + ": open boundary of " + std::to_string(open) + " edges");
+    {
+        // Where they are: one of them and the box around them all.
+        Vec3 lo = m.vertices[m.edges[firstOpen][0]], hi = lo;
+        for (std::size_t g = 0; g < m.edges.size(); ++g)
+            if (m.edgeStart[g + 1] - m.edgeStart[g] == 1)
+                for (const std::uint32_t v : m.edges[g])
+                {
+                    const Vec3& x = m.vertices[v];
+                    lo = {std::fmin(lo.x, x.x), std::fmin(lo.y, x.y), std::fmin(lo.z, x.z)};
+                    hi = {std::fmax(hi.x, x.x), std::fmax(hi.y, x.y), std::fmax(hi.z, x.z)};
+                }
+        report.warnings.push_back(source + ": open boundary of " + std::to_string(open) + " edges, e.g. " +
+                                  describeEdge(m, firstOpen) + "; the open edges lie within " + point(lo) +
+                                  " to " + point(hi) + " m (corners within " + number(tolerance) +
+                                  " m of each other are welded)");
+    }
     if (nonManifold > 0)
     {
-        const Vec3& a = m.vertices[m.edges[example][0]];
-        const Vec3& b = m.vertices[m.edges[example][1]];
-        report.warnings.push_back(
-            source + ": " + std::to_string(nonManifold) +
-            " non-manifold edges (used by 3 or more triangles), e.g. the edge of triangle " +
-            std::to_string(m.edgeUsers[m.edgeStart[example]] / 3) + " from (" + std::to_string(a.x) + ", " +
-            std::to_string(a.y) + ", " + std::to_string(a.z) + ") to (" + std::to_string(b.x) + ", " +
-            std::to_string(b.y) + ", " + std::to_string(b.z) + ")");
+        report.warnings.push_back(source + ": " + std::to_string(nonManifold) +
+                                  " non-manifold edges (used by 3 or more triangles), e.g. " +
+                                  describeEdge(m, example));
     }
     buildGrid(m);
     return m;

@@ -1,4 +1,5 @@
-// A triangle surface in its body frame: vertices welded by exact position, triangles, edge and
+// A triangle surface in its body frame: vertices welded (within kWeldTolerance of the mesh's
+// size: float32 STL files repeat a shared corner with a last-digit difference), triangles, edge and
 // vertex adjacency, and a uniform grid over the triangles for O(1) queries near a point.
 //
 // Built once from a triangle soup (buildTriangleMesh: three corners per triangle, as the STL and
@@ -71,7 +72,14 @@ struct MeshReport
     std::vector<std::string> warnings;
 };
 
-/// Welds the corners (3 per triangle, [m]) by exact position and builds adjacency and grid.
+/// Corners closer than this fraction of max(bounding-box diagonal, largest coordinate magnitude)
+/// in every coordinate are one vertex [-]: ~10 float32 roundings (relative precision 6e-8), far
+/// below any edge of a mesh a contact could resolve.
+inline constexpr Real kWeldTolerance = 1e-6;
+
+/// Welds the corners (3 per triangle, [m]) within kWeldTolerance (relative, above) and builds
+/// adjacency and grid. Open edges and non-manifold edges are reported with an example edge and,
+/// for open edges, the box around them.
 /// Throws InputError naming `source` and the triangle index (from 0, in file order) of the first
 /// degenerate triangle: twice its area below 1e-12 times the squared bounding-box diagonal (or
 /// two corners welded together). An empty soup is refused too.
