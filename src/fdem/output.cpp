@@ -131,8 +131,7 @@ OutputWriter::OutputWriter(const std::filesystem::path& directory, bool vtk, io:
     {
         energy_.open(directory / "energy.csv");
         energy_.stream() << "t,kinetic,strain,gravity,friction_work,normal_damping_work,broken_joints,"
-                            "energy_released,joint_work
-";
+                            "energy_released,joint_work\n";
         energy_.flush();
     }
     thermo_.emplace(directory, thermoColumns(), bytes(2));
