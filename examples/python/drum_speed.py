@@ -20,8 +20,8 @@ scene = {
                   "rolling_friction_dimensionless": 0.05, "rolling_model": "epsd"}],
     "wall": [{"name": "drum", "type": "cylinder", "material": "glass", "point": [0, -0.006, 0], "axis": [0, 1, 0],
               "radius": 0.03, "length": 0.012, "caps": True}],
-    "lattice": [{"material": "glass", "radius": 1.5e-3, "min": [-0.02, -0.0045, -0.025],
-                 "max": [0.02, 0.0045, 0.0], "spacing": 3.4e-3, "jitter": 1e-4}],
+    "lattice": [{"material": "glass", "radius": 1.5e-3, "min": [-0.015, -0.004, -0.022],
+                 "max": [0.015, 0.004, 0.0], "spacing": 3.4e-3, "jitter": 1e-4}],
 }
 
 

@@ -5,7 +5,7 @@ in turn; the stress-strain path is plotted (oedometer.png).
     PYTHONPATH=build/release/python /usr/bin/python3 examples/python/oedometer_servo.py [OUT_DIR]
 
 The lid is the plane wall 'lid'; its load is what the particles exert on it (wall_load), the
-stress that load over the box's section. The servo is proportional: v = -gain (p_target - p) / p_target.
+stress that load over the box's section. The servo is proportional: v = -0.005 m/s (p_target - p) / p_target.
 """
 import sys
 
@@ -17,8 +17,8 @@ import numpy as np
 
 import veridem
 
-SIDE = 0.02  # m, the box's side
-TOP = 0.0205  # m, the lid's start height
+SIDE = 0.0194  # m, the box's side: 8 spheres of radius 1.2 mm across, 0.02 mm apart
+TOP = 0.0146  # m, the lid's start height, just above 6 layers
 
 
 def scene(duration):
@@ -30,8 +30,8 @@ def scene(duration):
                        "skin": 2e-4},
         "material": [{"name": "grain", "density": 2500, "kn": 2e3, "restitution": 0.3, "friction": 0.3}],
         "wall": walls,
-        "lattice": [{"material": "grain", "radius": 1.2e-3, "min": [0.0015] * 3, "max": [0.0185] * 3,
-                     "spacing": 2.8e-3, "jitter": 1e-4}],
+        "lattice": [{"material": "grain", "radius": 1.2e-3, "min": [0, 0, 0], "max": [SIDE, SIDE, TOP],
+                     "spacing": 2.42e-3, "jitter": 1e-5}],
     }
 
 
@@ -45,7 +45,7 @@ def main():
     def servo(s):
         target = targets[min(int(s.time / stage), len(targets) - 1)]
         p = s.wall_load("lid")[0][2] / SIDE**2
-        s.set_wall_velocity("lid", (0, 0, -0.01 * (target - p) / target))
+        s.set_wall_velocity("lid", (0, 0, -0.005 * (target - p) / target))
         strain = -s.wall_displacement("lid")[2] / TOP
         history.append((s.time, target, p, strain))
 
