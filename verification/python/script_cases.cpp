@@ -1,8 +1,8 @@
 // Verification cases written in Python against the public API only (docs/python.md): the runner
 // starts Debian's /usr/bin/python3 on the script with the built module on PYTHONPATH and reads back
 // one line per quantity:
-// quantity<TAB>name<TAB>unit<TAB>expected<TAB>measured<TAB>tolerance<TAB>relative|absolute<TAB>why A script
-// that fails, or a module that was not built, fails the case with its output as a note.
+//   quantity<TAB>name<TAB>unit<TAB>expected<TAB>measured<TAB>tolerance<TAB>relative|absolute<TAB>why
+// A script that fails, or a module that was not built, fails the case with its output as a note.
 #include "case.h"
 
 #include <array>
@@ -27,9 +27,10 @@ std::vector<std::string> split(const std::string& line, char separator)
 
 CaseResult runScript(const std::string& script)
 {
-    const std::string command =
-        "PYTHONPATH=\"" VERIDEM_PYTHON_DIR "\" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 \"" +
-        std::string(VERIDEM_SOURCE_DIR) + "/verification/python/" + script + "\" 2>&1";
+    const std::string command = VERIDEM_PYTHON_PRELOAD " PYTHONPATH=\"" VERIDEM_PYTHON_DIR
+                                                       "\" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 \"" +
+                                std::string(VERIDEM_SOURCE_DIR) + "/verification/python/" + script +
+                                "\" 2>&1";
     CaseResult r;
     std::string output;
     {
