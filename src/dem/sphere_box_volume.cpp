@@ -67,13 +67,16 @@ Real capVolume(Real r, Real c)
 /// constant (the header derives it), with every arcsine as an atan2 of the one
 /// q = sqrt(r^2 - a^2 - z^2): asin(a / rho) = atan2(a, q), asin(z / sqrt(r^2 - a^2)) = atan2(z, q).
 /// The sum's derivative in q is q^2 / (a z), zero at the ends of the range (q -> 0), so the
-/// rounding of q there cancels (asin of a rounded ratio near 1 would be off by ~1e-8).
+/// rounding of q there cancels (asin of a rounded ratio near 1 would be off by ~1e-8). At q = 0
+/// (z != 0) the last arctangent is its limit sign(z) pi/2 taken directly: a * z underflows to 0 for a bound
+/// a as small as 1e-300 r, and atan2(0, 0) = 0 would put r pi/2 into the sphere's surface.
 Real arcsinePrimitive(Real r, Real a, Real z)
 {
     if (!(a > 0))
         return 0;
     const Real q = std::sqrt(std::max(Real(0), r * r - a * a - z * z));
-    return z * std::atan2(a, q) + a * std::atan2(z, q) - r * std::atan2(a * z, r * q);
+    const Real last = q > 0 || z == 0 ? std::atan2(a * z, r * q) : std::copysign(0.5 * kPi, z);
+    return z * std::atan2(a, q) + a * std::atan2(z, q) - r * last;
 }
 
 /// The volume [m^3] of the sphere of radius r where y >= b and z >= c, 0 <= b < r, |c| < r.
@@ -149,15 +152,17 @@ Real orthantVolume(Real r, std::array<Real, 3> bounds, int count)
 
 Real sphereBoxVolume(const Vec3& c, Real r, const Vec3& lo, const Vec3& hi)
 {
-    if (c.x - r >= lo.x && c.x + r <= hi.x && c.y - r >= lo.y && c.y + r <= hi.y && c.z - r >= lo.z &&
-        c.z + r <= hi.z)
-        return (4.0 / 3.0) * kPi * r * r * r;
-    if (c.x + r <= lo.x || c.x - r >= hi.x || c.y + r <= lo.y || c.y - r >= hi.y || c.z + r <= lo.z ||
-        c.z - r >= hi.z)
-        return 0;
-    // Inclusion-exclusion over the eight corners, relative to the centre.
+    // The faces relative to the centre, rounded once: the tests for a sphere wholly inside or
+    // outside use the same numbers as the corner terms (orthantVolume's bound >= r and <= -r), so
+    // the shortcut and the general path cannot disagree by a rounding of c - r (~1e-4 r for
+    // r = 1e-9 m at 1e3 m from the origin).
     const Real xs[2] = {lo.x - c.x, hi.x - c.x}, ys[2] = {lo.y - c.y, hi.y - c.y},
                zs[2] = {lo.z - c.z, hi.z - c.z};
+    if (xs[0] <= -r && xs[1] >= r && ys[0] <= -r && ys[1] >= r && zs[0] <= -r && zs[1] >= r)
+        return (4.0 / 3.0) * kPi * r * r * r;
+    if (xs[1] <= -r || xs[0] >= r || ys[1] <= -r || ys[0] >= r || zs[1] <= -r || zs[0] >= r)
+        return 0;
+    // Inclusion-exclusion over the eight corners.
     Real volume = 0;
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j)
