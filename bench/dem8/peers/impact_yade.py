@@ -16,8 +16,9 @@
 #            -5 m/s); T0 (default 0 s) is added to the recorded time (run_impact.sh --skip-flight)
 #   step     dt = 5e-7 s fixed; InsertionSortCollider with verletDist SKIN (default 2e-4 m, the
 #            LIGGGHTS deck's skin); gravity 9.8 m/s^2 along -z; NewtonIntegrator damping 0
-# Writes OUT.csv: t [s], z [m] of the ball every 1000 steps (0.5 ms) and at the end, and prints one line
-# "yade wall S steps N particles P rate R" (the timed O.run only; R in particle-steps/s).
+# Writes OUT.csv: t [s], z [m] of the ball every 1000 steps (0.5 ms) and at the end; prints the
+# wall and CPU time after each chunk, and at the end one line "yade wall S cpu C steps N
+# particles P rate R per-cpu-second Q" (the timed runs only; R, Q in particle-steps/s).
 import math
 import sys
 import time
@@ -71,10 +72,13 @@ def record():
 
 
 record()
-start = time.time()
+start, cpu_start = time.time(), time.process_time()
 while O.iter < steps:
     O.run(min(every, steps - O.iter), True)
     record()
-wall = time.time() - start
+    print('yade step %d t %.6g wall %.2f cpu %.2f' % (O.iter, t0 + O.iter * O.dt, time.time() - start,
+                                                     time.process_time() - cpu_start), flush=True)
+wall, cpu = time.time() - start, time.process_time() - cpu_start
 out.close()
-print('yade wall %.3f steps %d particles %d rate %.4g' % (wall, steps, count, count * steps / wall))
+print('yade wall %.3f cpu %.3f steps %d particles %d rate %.4g per-cpu-second %.4g' %
+      (wall, cpu, steps, count, count * steps / wall, count * steps / cpu))

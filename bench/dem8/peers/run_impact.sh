@@ -2,8 +2,9 @@
 # The DEM8 impact case (25k or 50k bed) in LIGGGHTS and Yade, from the shared input: converts it
 # (convert_impact.py), runs each code to the simulated time END [s], and writes for each code
 # OUTDIR/impact-<code>.csv (t [s], z [m] of the ball every 0.5 ms) and OUTDIR/impact-<code>.log,
-# and prints the wall time, particle-steps/s, the load (uptime) before and after, and the ball's
-# deepest point (penetration.py). See README.md.
+# and prints the wall time, particle-steps/s (per wall second and per CPU-second: the machine is
+# shared), the load (uptime) before and after, and the ball's deepest point (penetration.py).
+# See README.md.
 #
 #   bench/dem8/peers/run_impact.sh [options] END OUTDIR
 #     --code liggghts|yade|both   (default both, one after the other)
@@ -72,7 +73,7 @@ summary() { # code, csv, wall seconds
 if [ "$code" != yade ]; then
   echo "LIGGGHTS ($ranks rank(s)) before: $(uptime)"
   log="$out/impact-liggghts.log"
-  (cd "$work" && nice -n "$niceness" mpirun --allow-run-as-root --oversubscribe -np "$ranks" liggghts \
+  (cd "$work" && nice -n "$niceness" /usr/bin/time -f "%U %S" -o "$out/impact-liggghts.cpu" mpirun --allow-run-as-root --oversubscribe -np "$ranks" liggghts \
     -in "$here/impact_liggghts.in" -var data impact.data -var mesh walls.stl -var steps "$steps" \
     -var zball "$zball" -var vz "$vz" -var t0 "$t0" -var ballid "$particles" \
     -log "$log" -screen "$out/impact-liggghts.screen" > /dev/null 2>&1) ||
@@ -84,6 +85,8 @@ if [ "$code" != yade ]; then
   wall=$(awk '/^Loop time of/ {print $4}' "$log" | tail -n 1)
   echo "LIGGGHTS atoms at the end: $(awk '/^ *Step/ {on = 1; next} /^Loop time/ {on = 0} on && NF == 5 {a = $5} END {print a}' "$log")"
   summary "LIGGGHTS-$ranks" "$out/impact-liggghts.csv" "$wall"
+  cpu=$(awk 'NF == 2 {print $1 + $2}' "$out/impact-liggghts.cpu")
+  echo "LIGGGHTS-$ranks: cpu $cpu s (all ranks, with start-up): $(awk -v p="$particles" -v n="$steps" -v c="$cpu" 'BEGIN {printf "%.4g", p * n / c}') particle-steps per CPU-second"
 fi
 if [ "$code" != liggghts ]; then
   echo "Yade (1 process, 1 thread) before: $(uptime)"
@@ -93,4 +96,5 @@ if [ "$code" != liggghts ]; then
   echo "Yade after: $(uptime)"
   wall=$(awk '/^yade wall/ {print $3}' "$out/impact-yade.log")
   summary "Yade-1" "$out/impact-yade.csv" "$wall"
+  echo "Yade-1: $(awk '/^yade wall/ {print "cpu " $5 " s: " $13 " particle-steps per CPU-second"}' "$out/impact-yade.log")"
 fi
