@@ -350,6 +350,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         top.fail("material", "is missing: define at least one [[material]]");
     for (auto& m : materials)
         world.addMaterial(readMaterial(m));
+    scene.measurements.zones = readZones(top, world);
 
     auto pairs = top.arrayOfTables("pair");
     for (auto& w : top.arrayOfTables("wall"))
