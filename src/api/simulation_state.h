@@ -20,6 +20,7 @@
 #include "io/particle_output.h"
 #include "io/particle_state.h"
 #include "io/region_output.h"
+#include "io/species_output.h"
 #include "io/thermo_output.h"
 #include "io/toml_reader.h"
 #include "io/wall_output.h"
@@ -53,6 +54,9 @@ struct Simulation::State
     std::optional<io::RegionRecorder> region;
     std::optional<io::WallLoadRecorder> walls;
     std::optional<io::OutletRecorder> outlets;
+    std::optional<io::SpeciesRecorder> species;
+    std::optional<io::ZoneRecorder> zones;
+    std::optional<io::TrackRecorder> tracked;
     bool closed = false;
 
     dem::World& world() { return scene.world; }
@@ -61,13 +65,16 @@ struct Simulation::State
     dem::EnergyLedgerState* ledgerState() { return scene.measurements.energy ? &ledger.state : nullptr; }
 
     /// The number of output files in a checkpoint: particles.csv, thermo.csv, region.csv (if
-    /// measured), walls.csv (if there are walls), outlets.csv (if there are outlets), in order.
+    /// measured), walls.csv (if there are walls), outlets.csv (if there are outlets), then
+    /// species.csv, zones.csv and tracked.csv (if asked for), in order.
     std::size_t outputFiles() const
     {
         if (!files())
             return 0;
-        return 2 + std::size_t(scene.measurements.region) + std::size_t(wallLoads()) +
-               std::size_t(!scene.flow.outlets.empty());
+        const io::MeasurementOptions& m = scene.measurements;
+        return 2 + std::size_t(m.region) + std::size_t(wallLoads()) +
+               std::size_t(!scene.flow.outlets.empty()) + std::size_t(m.species) +
+               std::size_t(!m.zones.empty()) + std::size_t(!m.track.empty());
     }
 
     void openOutputs(const io::CheckpointOutputs* saved)
@@ -75,7 +82,9 @@ struct Simulation::State
         if (!root || !files())
             return;
         std::optional<io::ParticleRecorder::Resume> resume;
-        std::optional<std::uint64_t> thermoBytes, regionBytes, wallBytes, outletBytes;
+        std::optional<std::uint64_t> thermoBytes, regionBytes, wallBytes, outletBytes, speciesBytes,
+            zoneBytes, trackBytes;
+        const io::MeasurementOptions& measure = scene.measurements;
         if (saved)
         {
             resume = io::ParticleRecorder::Resume{saved->frameTimes, saved->fileBytes[0]};
@@ -84,10 +93,16 @@ struct Simulation::State
                 regionBytes = saved->fileBytes[2];
             if (wallLoads())
                 wallBytes = saved->fileBytes[2 + std::size_t(scene.measurements.region)];
+            std::size_t next = 2 + std::size_t(measure.region) + std::size_t(wallLoads());
             if (!scene.flow.outlets.empty())
-                outletBytes = saved->fileBytes.back();
+                outletBytes = saved->fileBytes[next++];
+            if (measure.species)
+                speciesBytes = saved->fileBytes[next++];
+            if (!measure.zones.empty())
+                zoneBytes = saved->fileBytes[next++];
+            if (!measure.track.empty())
+                trackBytes = saved->fileBytes[next++];
         }
-        const io::MeasurementOptions& measure = scene.measurements;
         const std::filesystem::path& dir = options.outDir;
         recorder.emplace(dir, scene.output, resume ? &*resume : nullptr);
         thermo.emplace(dir, scene.output, thermoBytes,
@@ -100,6 +115,12 @@ struct Simulation::State
             walls.emplace(dir, scene.output, wallBytes);
         if (!scene.flow.outlets.empty())
             outlets.emplace(dir, scene.output, outletBytes);
+        if (measure.species)
+            species.emplace(dir, scene.output, speciesBytes);
+        if (!measure.zones.empty())
+            zones.emplace(dir, scene.output, measure.zones, zoneBytes);
+        if (!measure.track.empty())
+            tracked.emplace(dir, scene.output, measure.track, trackBytes);
     }
 
     /// The outlets' totals: this process's, or on several ranks their sum (on the first). Collective.
@@ -144,6 +165,12 @@ struct Simulation::State
             walls->record(w);
         if (outlets)
             outlets->record(w, outletTotals);
+        if (species)
+            species->record(w);
+        if (zones)
+            zones->record(w);
+        if (tracked)
+            tracked->record(w);
     }
 
     void writeCheckpoint(const std::filesystem::path& path)
@@ -165,6 +192,12 @@ struct Simulation::State
                 outputs.fileBytes.push_back(walls->size());
             if (outlets)
                 outputs.fileBytes.push_back(outlets->size());
+            if (species)
+                outputs.fileBytes.push_back(species->size());
+            if (zones)
+                outputs.fileBytes.push_back(zones->size());
+            if (tracked)
+                outputs.fileBytes.push_back(tracked->size());
         }
         if (files())
             io::writeParticleState(options.outDir / "state.csv", gathered ? *gathered : world(), scene.dt);
@@ -187,6 +220,12 @@ struct Simulation::State
             walls->close();
         if (outlets)
             outlets->close();
+        if (species)
+            species->close();
+        if (zones)
+            zones->close();
+        if (tracked)
+            tracked->close();
     }
 
     void applyFlow()

@@ -22,6 +22,12 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
 {
     const ParticleStore& p = world.particles;
     const ContactHistoryStore& history = world.pairHistory;
+    if (!law.rolling) // (Hertz without rolling resistance: the law reads R* alone, lawLanes)
+    {
+        for (std::size_t m = 0; m < padded; ++m)
+            law.radius[m] = b.ri[m] * b.rj[m] / (b.ri[m] + b.rj[m]);
+        return;
+    }
     for (std::size_t m = 0; m < padded; ++m)
     {
         const std::uint32_t i = b.i[m], j = b.j[m];

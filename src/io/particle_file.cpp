@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 namespace veridem::io
@@ -140,6 +141,16 @@ void readParticleFile(TableReader& t, dem::World& world, const std::string& scen
     if (rowsKey && !(*rowsKey >= 1 && *rowsKey == std::floor(*rowsKey) && *rowsKey <= 1e12))
         t.fail("rows", "must be a whole number >= 1 (the particle rows to read)");
     const std::size_t rows = rowsKey ? static_cast<std::size_t>(*rowsKey) : ~std::size_t(0);
+    // A radius window selects rows (the DEM8 drum's file holds two species told apart by size).
+    const Real minRadius = t.number("min_radius", 0);
+    const Real maxRadius = t.number("max_radius", std::numeric_limits<Real>::infinity());
+    t.requireNonNegative("min_radius", minRadius, "m");
+    if (!(maxRadius > minRadius))
+        t.fail("max_radius",
+               "must exceed min_radius [m] (the rows kept have min_radius <= radius <= max_radius)");
+    if ((t.has("min_radius") || t.has("max_radius")) && radiusKey)
+        t.fail(t.has("min_radius") ? "min_radius" : "max_radius",
+               "selects rows by a radius column; with the radius key every row has the same radius");
     t.finish();
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
@@ -295,6 +306,8 @@ void readParticleFile(TableReader& t, dem::World& world, const std::string& scen
         if (!(radius > 0))
             throw InputError(where() + ": column 'radius' must be > 0 m (got " +
                              std::string(fields[std::size_t(layout->at[Radius])]) + ")");
+        if (radius < minRadius || radius > maxRadius)
+            continue; // (outside the radius window: not this table's)
         const Vec3 v = layout->at[Vx] >= 0 ? Vec3{row[Vx], row[Vy], row[Vz]} : keyVelocity;
         const Vec3 w = layout->at[Wx] >= 0 ? Vec3{row[Wx], row[Wy], row[Wz]} : keySpin;
         if (double(world.particles.size()) + 1 + reserved > limit)

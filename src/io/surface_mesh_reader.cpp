@@ -56,6 +56,7 @@ class Lines
         if (!next(words))
             fail("unexpected end of file, expected " + what);
     }
+    std::size_t line() const { return line_; }
     [[noreturn]] void fail(const std::string& message) const
     {
         throw InputError(path_ + ":" + std::to_string(line_) + ": " + message);
@@ -73,7 +74,7 @@ class Lines
             used = 0;
         }
         if (used != word.size() || !std::isfinite(v))
-            fail("bad number '" + word + "'");
+            fail("bad number '" + word + "' (expected a finite number)");
         return v;
     }
     std::int64_t integer(const std::string& word) const
@@ -300,7 +301,53 @@ std::vector<Vec3> gmsh(const std::string& text, const std::string& path, Real sc
     return corners;
 }
 
+/// Nine-column triangle text: a header line, then per line the x y z of three corners.
+std::vector<Vec3> triangleText(const std::string& text, const std::string& path, Real scale,
+                               std::vector<std::size_t>* lines)
+{
+    Lines in(text, path);
+    std::vector<std::string> w;
+    const std::string expected = "expected 9 numbers per line (x y z of three corners, m)";
+    if (!in.next(w))
+        throw InputError(path + ": empty triangle file (" + expected + " after a header line)");
+    bool numeric = true;
+    for (const std::string& word : w)
+    {
+        std::size_t used = 0;
+        try
+        {
+            std::stod(word, &used);
+        }
+        catch (const std::exception&)
+        {
+            used = 0;
+        }
+        numeric = numeric && used == word.size();
+    }
+    if (numeric)
+        in.fail("expected a header line naming the nine columns before the triangles");
+    std::vector<Vec3> corners;
+    while (in.next(w))
+    {
+        if (w.size() != 9)
+            in.fail(expected + ", found " + std::to_string(w.size()));
+        for (int c = 0; c < 3; ++c)
+            corners.push_back(scale *
+                              Vec3{in.number(w[3 * c]), in.number(w[3 * c + 1]), in.number(w[3 * c + 2])});
+        if (lines)
+            lines->push_back(in.line());
+    }
+    if (corners.empty())
+        throw InputError(path + ": no triangles after the header line (" + expected + ")");
+    return corners;
+}
+
 } // namespace
+
+std::vector<Vec3> readTriangleText(const std::string& path, Real scale, std::vector<std::size_t>* lines)
+{
+    return triangleText(readAll(path), path, scale, lines);
+}
 
 std::vector<Vec3> readStl(const std::string& path, Real scale)
 {
@@ -331,7 +378,7 @@ std::vector<Vec3> readGmshSurface(const std::string& path, Real scale)
     return gmsh(readAll(path), path, scale);
 }
 
-std::vector<Vec3> readSurfaceMesh(const std::string& path, Real scale)
+std::vector<Vec3> readSurfaceMesh(const std::string& path, Real scale, std::vector<std::size_t>* lines)
 {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -340,7 +387,9 @@ std::vector<Vec3> readSurfaceMesh(const std::string& path, Real scale)
         return readStl(path, scale);
     if (ext == ".msh")
         return readGmshSurface(path, scale);
-    throw InputError(path + ": unknown mesh file type '" + ext + "' (expected .stl or .msh)");
+    if (ext == ".txt")
+        return readTriangleText(path, scale, lines);
+    throw InputError(path + ": unknown mesh file type '" + ext + "' (expected .stl, .msh or .txt)");
 }
 
 } // namespace veridem::io

@@ -92,8 +92,8 @@ void readCommonWallKeys(TableReader& t, dem::Wall& wall, const Vec3& axis)
     wall.loadPoint = t.vec3("load_point", m.rotationCentre);
 }
 
-/// A triangle-mesh wall: the surface from `file` (STL or Gmsh, relative to the scene's directory)
-/// times `scale`, translating at `velocity` and turning at `omega` (a vector) about
+/// A triangle-mesh wall: the surface from `file` (STL, Gmsh or triangle text, relative to the scene's
+/// directory) times `scale`, translating at `velocity` and turning at `omega` (a vector) about
 /// `rotation_centre`. The mesh's warnings (open boundary, non-manifold edges) go to stderr.
 void readMeshWall(TableReader& t, dem::Wall& wall)
 {
@@ -102,9 +102,11 @@ void readMeshWall(TableReader& t, dem::Wall& wall)
     t.requirePositive("scale", scale, "");
     const std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / file;
     dem::MeshReport report;
+    std::vector<std::size_t> lines; // (of a text mesh: each triangle's line, for its errors)
+    const std::vector<Vec3> corners = readSurfaceMesh(path.string(), scale, &lines);
     dem::MeshShape mesh;
     mesh.mesh = std::make_shared<const dem::TriangleMesh>(
-        dem::buildTriangleMesh(readSurfaceMesh(path.string(), scale), path.string(), report));
+        dem::buildTriangleMesh(corners, path.string(), report, lines));
     for (const std::string& warning : report.warnings)
         std::fprintf(stderr, "veridem: warning: wall '%s': %s\n", wall.name.c_str(), warning.c_str());
     wall.motion.velocity = t.vec3("velocity", {});

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 using namespace veridem;
@@ -236,4 +237,47 @@ normal = [0, 0, 1]
     EXPECT_NE(errorOf(plane + "active_from = 1\nactive_until = 0.5\n").find("'active_until' must be after"),
               std::string::npos);
     EXPECT_NE(errorOf(plane + "caps = true\n").find("caps"), std::string::npos); // not a plane key
+}
+
+TEST(DemScene, ZonesSpeciesAndTrackedParticlesAreRead)
+{
+    const std::string scene = kHeader + R"(
+[[material]]
+name = "glass"
+density = 2500
+kn = 1e4
+[output]
+species = true
+track = [0]
+[[zone]]
+name = "upper"
+min = [-1, -1, 0]
+materials = ["glass"]
+[[zone]]
+name = "all"
+[[sphere]]
+material = "glass"
+radius = 0.01
+position = [0, 0, 0]
+)";
+    const io::DemScene s = load(scene);
+    ASSERT_EQ(s.measurements.zones.size(), 2u);
+    EXPECT_EQ(s.measurements.zones[0].materials, (std::vector<std::uint32_t>{1}));
+    EXPECT_EQ(s.measurements.zones[0].lo.z, 0);
+    EXPECT_EQ(s.measurements.zones[0].hi.x, std::numeric_limits<Real>::infinity());
+    EXPECT_EQ(s.measurements.zones[1].materials, (std::vector<std::uint32_t>{0, 1})); // (every material)
+    EXPECT_TRUE(s.measurements.species);
+    EXPECT_EQ(s.measurements.track, (std::vector<std::uint32_t>{0}));
+    // An unknown material is named with the key, its line and the scene's materials.
+    EXPECT_NE(errorOf(kHeader + "[[zone]]\nname = \"z\"\nmaterials = [\"M3\"]\n").find("scene.toml:12"),
+              std::string::npos)
+        << errorOf(kHeader + "[[zone]]\nname = \"z\"\nmaterials = [\"M3\"]\n");
+    EXPECT_NE(errorOf(kHeader + "[[zone]]\nname = \"z\"\nmaterials = [\"M3\"]\n")
+                  .find("'materials' names an unknown material 'M3' (the scene's [[material]] names: steel)"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHeader + "[[zone]]\nname = \"z\"\nmin = [0, 0, 1]\nmax = [1, 1, 1]\n")
+                  .find("'max' must exceed min"),
+              std::string::npos);
+    EXPECT_NE(errorOf(kHeader + "[output]\ntrack = [1.5]\n").find("'track' must be an array of particle ids"),
+              std::string::npos);
 }

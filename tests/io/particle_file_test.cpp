@@ -215,3 +215,22 @@ TEST(ParticleFile, AnIdGivenByTwoFilesIsRefused)
         errorOf(fileTable("a.csv") + fileTable("b.csv")).find("id 5 is given by two [[particles]] files"),
         std::string::npos);
 }
+
+TEST(ParticleFile, ARadiusWindowGivesEachSizeItsMaterial)
+{
+    // The DEM8 drum's file: two sizes of two materials in one file, read by two tables.
+    write("mixture.txt", "Radius[m] PosX[m] PosY[m] PosZ[m]\n 0.002 0 0 0\n 0.001 0.1 0 0\n 0.001 0.2 0 0\n");
+    const io::DemScene s = load(fileTable("mixture.txt", "material = \"glass\"\nmax_radius = 0.0015\n") +
+                                fileTable("mixture.txt", "material = \"steel\"\nmin_radius = 0.0015\n"));
+    const auto& p = s.world.particles;
+    ASSERT_EQ(p.size(), 3u);
+    // File order within each table, the first table's rows first.
+    EXPECT_EQ(p.radius, (std::vector<Real>{0.001, 0.001, 0.002}));
+    EXPECT_EQ(p.material, (std::vector<std::uint32_t>{0, 0, 1}));
+    EXPECT_EQ(p.position[0].x, 0.1);
+    EXPECT_NE(errorOf(fileTable("mixture.txt", "min_radius = 0.002\nmax_radius = 0.001\n"))
+                  .find("'max_radius' must exceed min_radius"),
+              std::string::npos);
+    EXPECT_NE(errorOf(fileTable("xyz.txt", "radius = 0.01\nmin_radius = 0.001\n")).find("min_radius"),
+              std::string::npos);
+}

@@ -124,3 +124,84 @@ TEST(SurfaceMeshReader, BadFilesAreNamed)
     EXPECT_NE(errorOf(write("b.msh", "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n")).find("b.msh:2: binary"),
               std::string::npos);
 }
+
+namespace
+{
+// The square as nine-column triangle text (the DEM8 walls' layout: a header, tabs between columns).
+std::string triangleText()
+{
+    std::string s = "vertex1_X[m] vertex1_Y[m] vertex1_Z[m] vertex2_X[m] vertex2_Y[m] vertex2_Z[m] "
+                    "vertex3_X[m] vertex3_Y[m] vertex3_Z[m]\n";
+    for (std::size_t t = 0; t < 2; ++t)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            const Vec3& v = kSquare[3 * t + c];
+            s += std::to_string(v.x) + "\t" + std::to_string(v.y) + "\t" + std::to_string(v.z) +
+                 (c < 2 ? "\t" : "\n");
+        }
+    }
+    return s;
+}
+
+/// The error of reading `text` as a triangle file and building its mesh, as a [[wall]] does.
+std::string textMeshError(const std::string& name, const std::string& text)
+{
+    try
+    {
+        std::vector<std::size_t> lines;
+        const std::string path = write(name, text);
+        const std::vector<Vec3> corners = io::readSurfaceMesh(path, 1, &lines);
+        dem::MeshReport report;
+        dem::buildTriangleMesh(corners, path, report, lines);
+    }
+    catch (const InputError& e)
+    {
+        return e.what();
+    }
+    return "";
+}
+} // namespace
+
+TEST(SurfaceMeshReader, TriangleTextGivesTheSameTrianglesAsStl)
+{
+    std::vector<std::size_t> lines;
+    EXPECT_EQ(io::readSurfaceMesh(write("square.txt", triangleText()), 1, &lines),
+              io::readStl(write("a.stl", asciiStl())));
+    EXPECT_EQ(lines, (std::vector<std::size_t>{2, 3}));
+    // Blank lines are skipped and counted; scale multiplies as for STL.
+    lines.clear();
+    const auto scaled = io::readTriangleText(write("s.TXT", "\n" + triangleText() + "\n"), 0.001, &lines);
+    EXPECT_EQ(scaled[2], (Vec3{0.001, 0.001, 0}));
+    EXPECT_EQ(lines, (std::vector<std::size_t>{3, 4}));
+    // The welding of buildTriangleMesh applies: the square's 6 corners are 4 vertices.
+    dem::MeshReport report;
+    EXPECT_EQ(dem::buildTriangleMesh(scaled, "s", report).vertices.size(), 4u);
+}
+
+TEST(SurfaceMeshReader, BadTriangleTextNamesFileLineAndWhatWasExpected)
+{
+    const std::string header = "x1 y1 z1 x2 y2 z2 x3 y3 z3\n";
+    const std::string good = "0 0 0 1 0 0 1 1 0\n";
+    const auto error = [&](const std::string& name, const std::string& text)
+    { return textMeshError(name, text); };
+    EXPECT_NE(error("c.txt", header + good + "0 0 0 1 0 0 1 1\n")
+                  .find("c.txt:3: expected 9 numbers per line (x y z of three corners, m), found 8"),
+              std::string::npos);
+    EXPECT_NE(error("w.txt", header + "0 0 0 1 0 0 1 1 0 7\n").find("w.txt:2: expected 9 numbers per line"),
+              std::string::npos);
+    EXPECT_NE(error("n.txt", header + "0 0 0 1 zero 0 1 1 0\n")
+                  .find("n.txt:2: bad number 'zero' (expected a finite number)"),
+              std::string::npos);
+    EXPECT_NE(error("nan.txt", header + good + "0 0 0 1 0 nan 1 1 0\n").find("nan.txt:3: bad number 'nan'"),
+              std::string::npos);
+    // Collinear corners (zero area) and a repeated corner: refused by buildTriangleMesh with the line.
+    EXPECT_NE(
+        error("d.txt", header + good + "\n0 0 0 1 0 0 2 0 0\n").find("d.txt:4: triangle 1 is degenerate"),
+        std::string::npos);
+    EXPECT_NE(error("r.txt", header + "0 0 0 0 0 0 1 1 0\n").find("r.txt:2: triangle 0 is degenerate"),
+              std::string::npos);
+    EXPECT_NE(error("h.txt", good).find("h.txt:1: expected a header line naming the nine columns"),
+              std::string::npos);
+    EXPECT_NE(error("e.txt", header).find("e.txt: no triangles after the header line"), std::string::npos);
+}

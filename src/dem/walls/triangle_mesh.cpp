@@ -177,7 +177,7 @@ void buildGrid(TriangleMesh& m)
 } // namespace
 
 TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::string& source,
-                               MeshReport& report)
+                               MeshReport& report, const std::vector<std::size_t>& lines)
 {
     if (corners.empty() || corners.size() % 3 != 0)
         throw InputError(source + ": the mesh has no triangles");
@@ -238,8 +238,10 @@ TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::stri
         const Vec3 n =
             cross(m.vertices[tri[1]] - m.vertices[tri[0]], m.vertices[tri[2]] - m.vertices[tri[0]]);
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(length(n) > minTwiceArea))
-            throw InputError(source + ": triangle " + std::to_string(t) +
-                             " is degenerate (zero area relative to the mesh size)");
+            throw InputError(source + (t < lines.size() ? ":" + std::to_string(lines[t]) : std::string()) +
+                             ": triangle " + std::to_string(t) +
+                             " is degenerate (zero area relative to the mesh size; expected three distinct, "
+                             "non-collinear corners)");
         m.triangles.push_back(tri);
         m.normals.push_back(n / length(n));
     }

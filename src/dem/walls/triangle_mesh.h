@@ -82,9 +82,10 @@ inline constexpr Real kWeldTolerance = 1e-6;
 /// for open edges, the box around them.
 /// Throws InputError naming `source` and the triangle index (from 0, in file order) of the first
 /// degenerate triangle: twice its area below 1e-12 times the squared bounding-box diagonal (or
-/// two corners welded together). An empty soup is refused too.
+/// two corners welded together), and its line `lines[t]` of the source if `lines` is given (a text
+/// format with one triangle a line). An empty soup is refused too.
 TriangleMesh buildTriangleMesh(const std::vector<Vec3>& corners, const std::string& source,
-                               MeshReport& report);
+                               MeshReport& report, const std::vector<std::size_t>& lines = {});
 
 /// The feature of a triangle nearest to a point.
 enum class MeshFeature : std::uint8_t
