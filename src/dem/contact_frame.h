@@ -79,6 +79,13 @@ VERIDEM_HOT_INLINE ContactFrameOf<Real> wallContactFrame(const Vec3& normal, Rea
     return {normal, overlap, r, 0, v + cross(w, arm) - velocityAt(motion, midStepContactPoint)};
 }
 
+/// The effective radius R* = ri rj / (ri + rj) [m] of two spheres of radii ri, rj [m] (convex
+/// against convex; a sphere inside a concave wall: walls/wall.h).
+VERIDEM_HOT_INLINE Real pairEffectiveRadius(Real ri, Real rj)
+{
+    return ri * rj / (ri + rj);
+}
+
 /// The rolling inertia of a pair [kg m^2]: the series combination of each sphere's moment of
 /// inertia about its contact point, I + m r^2 (invInertia [1/(kg m^2)], mass [kg], radius [m]).
 VERIDEM_HOT_INLINE Real pairRollingInertia(Real invInertiaI, Real massI, Real ri, Real invInertiaJ,

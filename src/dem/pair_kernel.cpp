@@ -25,7 +25,7 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
     if (!law.rolling) // (Hertz without rolling resistance: the law reads R* alone, lawLanes)
     {
         for (std::size_t m = 0; m < padded; ++m)
-            law.radius[m] = b.ri[m] * b.rj[m] / (b.ri[m] + b.rj[m]);
+            law.radius[m] = pairEffectiveRadius(b.ri[m], b.rj[m]);
         return;
     }
     for (std::size_t m = 0; m < padded; ++m)
@@ -35,7 +35,7 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
         ContactInput in;
         in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
         in.angularVelocity = p.angularVelocity[i];
-        in.effectiveRadius = ri * rj / (ri + rj);
+        in.effectiveRadius = pairEffectiveRadius(ri, rj);
         in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
         in.rollingInertia =
             pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
@@ -269,7 +269,7 @@ ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint
     in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
     in.angularVelocity = p.angularVelocity[i];
     in.effectiveMass = effectiveMass;
-    in.effectiveRadius = ri * rj / (ri + rj);
+    in.effectiveRadius = pairEffectiveRadius(ri, rj);
     in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
     in.rollingInertia = pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
     return in;
