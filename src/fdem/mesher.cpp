@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "fdem/elements/cst.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -58,7 +59,7 @@ bool insideOrOn(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c)
 
 } // namespace
 
-TriangleMesh meshPolygon(const std::vector<Vec2>& vertices)
+std::vector<Vec2> counterClockwiseOutline(const std::vector<Vec2>& vertices)
 {
     const std::size_t n = vertices.size();
     if (n < 3)
@@ -82,6 +83,19 @@ TriangleMesh meshPolygon(const std::vector<Vec2>& vertices)
                 throw InputError("polygon mesher: edges " + std::to_string(i) + " and " + std::to_string(j) +
                                  " cross (the polygon must be simple)");
         }
+    std::vector<Vec2> ring(vertices);
+    if (area2 < 0)
+        std::reverse(ring.begin(), ring.end());
+    return ring;
+}
+
+TriangleMesh meshPolygon(const std::vector<Vec2>& vertices)
+{
+    counterClockwiseOutline(vertices); // the checks
+    const std::size_t n = vertices.size();
+    Real area2 = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        area2 += cross(vertices[i], vertices[(i + 1) % n]);
     TriangleMesh m;
     m.points = vertices;
     std::vector<std::uint32_t> ring(n);

@@ -1,6 +1,7 @@
 #include "fdem/output.h"
 
 #include "core/error.h"
+#include "fdem/fragments.h"
 #include "fdem/output_thermo.h"
 
 #include <algorithm>
@@ -8,6 +9,44 @@
 
 namespace veridem::fdem
 {
+
+void writeFragments(const World& world, const std::filesystem::path& file)
+{
+    std::vector<Fragment> fragments = findFragments(world);
+    std::vector<std::size_t> order(fragments.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    // By body, largest first (ties by id): the passing fraction of a row counts it and the rows after it.
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b)
+                     {
+                         return fragments[a].body != fragments[b].body
+                                    ? fragments[a].body < fragments[b].body
+                                    : fragments[a].area > fragments[b].area;
+                     });
+    std::vector<Real> bodyMass(world.bodyCount(), 0);
+    for (const Fragment& f : fragments)
+        bodyMass[f.body] += f.mass;
+    io::AtomicFile atomic(file);
+    std::ostream& out = atomic.stream();
+    out.precision(17);
+    out << "fragment,body,name,triangles,area,mass,x,y,equivalent_diameter,passing\n";
+    std::vector<Real> passing(fragments.size());
+    for (std::size_t k = order.size(); k-- > 0;)
+    {
+        const Fragment& f = fragments[order[k]];
+        const bool last = k + 1 == order.size() || fragments[order[k + 1]].body != f.body;
+        passing[k] = (last ? 0 : passing[k + 1]) + f.mass / bodyMass[f.body];
+    }
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+        const Fragment& f = fragments[order[k]];
+        out << order[k] << ',' << f.body << ',' << world.bodyName(f.body) << ',' << f.triangles << ','
+            << f.area << ',' << f.mass << ',' << f.centroid.x << ',' << f.centroid.y << ','
+            << f.equivalentDiameter << ',' << passing[k] << '\n';
+    }
+    atomic.commit();
+}
 
 void writeVtu(const World& world, const std::filesystem::path& file, io::VtkFormat format)
 {

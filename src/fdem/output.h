@@ -63,6 +63,11 @@ class OutputWriter
     std::vector<bool> listed_;       // per frame: in the .pvd (false: before a restart, not in DIR)
 };
 
+/// Writes fragments.csv: one row per fragment (fdem/fragments.h), largest first: fragment, body,
+/// name, triangles, area [m^2], mass [kg/m], x, y [m] (centroid), equivalent_diameter [m], and
+/// passing [1] (the mass fraction of the fragments of this body no larger: the size distribution).
+void writeFragments(const World& world, const std::filesystem::path& file);
+
 /// Writes one .vtu file of the world's triangles (VTK XML UnstructuredGrid).
 void writeVtu(const World& world, const std::filesystem::path& file, io::VtkFormat format);
 

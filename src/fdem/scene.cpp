@@ -1,11 +1,13 @@
 #include "fdem/scene.h"
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "fdem/body_overlap.h"
 #include "fdem/gmsh_reader.h"
 #include "fdem/mesher.h"
 #include "io/toml_reader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -93,8 +95,23 @@ TriangleMesh readGeometry(toml::table& bodyTable, io::TableReader& body, const s
 {
     int kinds = 0;
     TriangleMesh mesh;
+    // edge_length [m]: interior nodes for a polygon (else ear clipping) and the size of a disc's mesh.
+    const std::optional<Real> edgeLength = body.optionalNumber("edge_length");
+    if (edgeLength && !(*edgeLength > 0 && std::isfinite(*edgeLength)))
+        body.fail("edge_length", "must be a positive length in m");
+    const auto checkTriangleCount = [&](Real area)
+    {
+        // The refined mesh has about area / (sqrt(3)/4 h^2) triangles: refused before it is made.
+        const Real estimate = area / (0.4330127018922193 * *edgeLength * *edgeLength);
+        if (estimate > static_cast<Real>(kMaxRectangleTriangles))
+            body.fail("edge_length", "would make about " + std::to_string(static_cast<long long>(estimate)) +
+                                         " triangles (at most " + std::to_string(kMaxRectangleTriangles) +
+                                         ")");
+    };
     if (body.has("rectangle"))
     {
+        if (edgeLength)
+            body.fail("edge_length", "applies to a 'polygon' or a 'disc' (not to a 'rectangle' or a 'mesh')");
         body.table("rectangle"); // checks that it is a table and marks the key as read
         const toml::table* rect = bodyTable["rectangle"].as_table();
         ++kinds;
@@ -120,10 +137,40 @@ TriangleMesh readGeometry(toml::table& bodyTable, io::TableReader& body, const s
     if (auto polygon = takePolygon(bodyTable, "polygon", where, file))
     {
         ++kinds;
-        mesh = meshPolygon(*polygon);
+        if (edgeLength)
+        {
+            Real area2 = 0;
+            for (std::size_t i = 0; i < polygon->size(); ++i)
+                area2 += cross((*polygon)[i], (*polygon)[(i + 1) % polygon->size()]);
+            checkTriangleCount(std::abs(area2) / 2);
+            mesh = meshPolygonRefined(*polygon, *edgeLength);
+        }
+        else
+            mesh = meshPolygon(*polygon);
     }
+    if (body.has("disc"))
+    {
+        body.table("disc"); // checks that it is a table and marks the key as read
+        ++kinds;
+        toml::table copy = *bodyTable["disc"].as_table();
+        const std::string w = where + " [disc]";
+        const Vec2 centre = takeVec2(copy, "centre", w, file).value_or(Vec2{});
+        io::TableReader r(copy, w, file);
+        const Real radius = r.requiredNumber("radius");
+        if (!(radius > 0) || !std::isfinite(radius))
+            r.fail("radius", "must be a positive length in m");
+        r.finish();
+        if (!edgeLength)
+            body.fail("edge_length", "is required with 'disc' (the target edge length of its mesh, m)");
+        checkTriangleCount(kPi * radius * radius);
+        mesh = meshPolygonRefined(discOutline(centre, radius, *edgeLength), *edgeLength);
+    }
+    if (edgeLength && kinds == 0)
+        body.fail("edge_length", "applies to a 'polygon' or a 'disc'");
     if (body.has("mesh"))
     {
+        if (edgeLength)
+            body.fail("edge_length", "applies to a 'polygon' or a 'disc' (not to a 'rectangle' or a 'mesh')");
         ++kinds;
         std::filesystem::path path = body.string("mesh", "");
         if (path.is_relative())
@@ -131,7 +178,8 @@ TriangleMesh readGeometry(toml::table& bodyTable, io::TableReader& body, const s
         mesh = readGmsh(path.string());
     }
     if (kinds != 1)
-        throw InputError(file + ": " + where + ": give exactly one of 'rectangle', 'polygon' or 'mesh'");
+        throw InputError(file + ": " + where +
+                         ": give exactly one of 'rectangle', 'polygon', 'disc' or 'mesh'");
     return mesh;
 }
 

@@ -147,6 +147,7 @@ int runScene(const toml::table& sceneTable, const std::string& sceneFile, const 
             progressLine.update(i, totalSteps, world.time() - start);
     }
     output.finish();
+    writeFragments(world, outDir / "fragments.csv");
     progressLine.finish();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     std::printf("fdem2d: %llu steps in %.2f s (%.3g element-steps/s); output in %s\n",

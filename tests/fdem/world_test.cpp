@@ -1,5 +1,6 @@
 #include "core/error.h"
 #include "fdem/broadphase.h"
+#include "fdem/elements/cst.h"
 #include "fdem/mesher.h"
 #include "fdem/scene.h"
 #include "fdem/scene_runner.h"
@@ -186,6 +187,40 @@ TEST(Scene, ReadsAPolygonBodyAndRejectsTwoGeometries)
     std::string notTable = s;
     notTable.replace(at, end - at, "rectangle = 5");
     expectError(notTable, "rectangle");
+}
+
+TEST(Scene, EdgeLengthRefinesAPolygonAndMeshesADisc)
+{
+    std::string s = kScene;
+    const auto at = s.find("rectangle = {");
+    const auto end = s.find('\n', at);
+    const auto with = [&](const std::string& geometry)
+    {
+        std::string t = s;
+        t.replace(at, end - at, geometry);
+        return t;
+    };
+    // The 0.05 m square at h = 0.01 m: 5 pieces per side, interior nodes, area kept.
+    const Scene square = readScene(
+        parse(with("polygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05], [0.0, 0.05]]\nedge_length = 0.01")),
+        "test.toml");
+    const TriangleMesh& m = square.bodies[0].mesh;
+    EXPECT_GT(m.points.size(), 20u); // 20 on the outline, the rest inside
+    Real area = 0;
+    for (const auto& t : m.triangles)
+        area += signedArea(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+    EXPECT_NEAR(area, 0.0025, 1e-15);
+    // A disc of radius 0.02 m (clear of nothing else: one body) at h = 0.005 m: 26 outline points.
+    const Scene disc = readScene(
+        parse(with("disc = { centre = [0.1, 0.1], radius = 0.02 }\nedge_length = 0.005")), "test.toml");
+    EXPECT_GT(disc.bodies[0].mesh.triangles.size(), 40u);
+    expectError(with("disc = { centre = [0.1, 0.1], radius = 0.02 }"), "edge_length");
+    expectError(with("disc = { centre = [0.1, 0.1], radius = -0.02 }\nedge_length = 0.005"), "radius");
+    expectError(with("disc = { centre = [0.1, 0.1], radius = 0.02, r = 1.0 }\nedge_length = 0.005"), "'r'");
+    expectError(with("polygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05]]\nedge_length = 0.0"), "edge_length");
+    expectError(with("polygon = [[0.0, 0.0], [0.05, 0.0], [0.05, 0.05]]\nedge_length = 1e-7"),
+                "triangles (at most");
+    expectError(std::string(s).insert(end, "\nedge_length = 0.01"), "applies to a 'polygon' or a 'disc'");
 }
 
 TEST(SceneRunner, RefusesATimeStepAboveTheLimitAndRunsBelowIt)
