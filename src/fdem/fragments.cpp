@@ -1,6 +1,7 @@
 #include "fdem/fragments.h"
 
 #include "core/constants.h"
+#include "fdem/union_find.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,29 +9,6 @@
 
 namespace veridem::fdem
 {
-
-namespace
-{
-
-std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t a)
-{
-    while (parent[a] != a)
-    {
-        parent[a] = parent[parent[a]]; // path halving
-        a = parent[a];
-    }
-    return a;
-}
-
-void join(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
-{
-    a = root(parent, a);
-    b = root(parent, b);
-    if (a != b)
-        parent[std::max(a, b)] = std::min(a, b); // the lower id is the root: deterministic
-}
-
-} // namespace
 
 std::vector<Fragment> findFragments(const World& world)
 {
@@ -47,18 +25,18 @@ std::vector<Fragment> findFragments(const World& world)
             if (firstAtNode[n] == ~0u)
                 firstAtNode[n] = t;
             else
-                join(parent, firstAtNode[n], t);
+                unionJoin(parent, firstAtNode[n], t);
         }
     const JointStore& joints = world.joints();
     for (std::size_t j = 0; j < joints.size(); ++j)
         if (!joints.broken[j])
-            join(parent, joints.triangles[j][0], joints.triangles[j][1]);
+            unionJoin(parent, joints.triangles[j][0], joints.triangles[j][1]);
     // One fragment per root, numbered in order of the roots (their lowest triangle id).
     std::vector<std::uint32_t> index(count, ~0u);
     std::vector<Fragment> fragments;
     for (std::uint32_t t = 0; t < count; ++t)
     {
-        const auto r = root(parent, t);
+        const auto r = unionRoot(parent, t);
         if (index[r] == ~0u)
         {
             index[r] = static_cast<std::uint32_t>(fragments.size());

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "exec/thread_pool.h"
+#include "fdem/union_find.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,29 +13,6 @@
 
 namespace veridem::fdem
 {
-
-namespace
-{
-
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t i)
-{
-    while (parent[i] != i)
-    {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    return i;
-}
-
-void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
-{
-    a = findRoot(parent, a);
-    b = findRoot(parent, b);
-    if (a != b)
-        parent[std::max(a, b)] = std::min(a, b);
-}
-
-} // namespace
 
 SplitMesh splitForJoints(const TriangleMesh& mesh, const std::function<bool(Vec2, Vec2)>& selected)
 {
@@ -73,15 +51,15 @@ SplitMesh splitForJoints(const TriangleMesh& mesh, const std::function<bool(Vec2
             jointOther.push_back(b);
             continue;
         }
-        unite(parent, corner(a, p), corner(b, p));
-        unite(parent, corner(a, q), corner(b, q));
+        unionJoin(parent, corner(a, p), corner(b, p));
+        unionJoin(parent, corner(a, q), corner(b, q));
     }
     SplitMesh out;
     std::vector<std::uint32_t> newId(parent.size(), std::numeric_limits<std::uint32_t>::max());
     out.mesh.triangles.resize(mesh.triangles.size());
     for (std::uint32_t c = 0; c < parent.size(); ++c)
     {
-        const std::uint32_t root = findRoot(parent, c);
+        const std::uint32_t root = unionRoot(parent, c);
         if (newId[root] == std::numeric_limits<std::uint32_t>::max())
         {
             newId[root] = static_cast<std::uint32_t>(out.mesh.points.size());
@@ -95,8 +73,8 @@ SplitMesh splitForJoints(const TriangleMesh& mesh, const std::function<bool(Vec2
         const std::uint32_t b = jointOther[j];
         const std::uint32_t p = mesh.triangles[a][ea], q = mesh.triangles[a][(ea + 1) % 3];
         out.jointNodes.push_back(
-            {newId[findRoot(parent, corner(a, p))], newId[findRoot(parent, corner(a, q))],
-             newId[findRoot(parent, corner(b, p))], newId[findRoot(parent, corner(b, q))]});
+            {newId[unionRoot(parent, corner(a, p))], newId[unionRoot(parent, corner(a, q))],
+             newId[unionRoot(parent, corner(b, p))], newId[unionRoot(parent, corner(b, q))]});
         out.jointTriangles.push_back({a, b});
     }
     return out;
