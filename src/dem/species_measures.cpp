@@ -10,7 +10,7 @@ std::vector<SpeciesMeasure> measureSpecies(const ParticleStore& particles, std::
     for (std::size_t i = 0; i < particles.size(); ++i)
     {
         const std::uint32_t k = particles.material[i];
-        if (k >= materialCount)
+        if (k >= materialCount || particles.retired(i)) // (taken out by an outlet: not in the scene)
             continue;
         ++species[k].count;
         species[k].mass += particles.mass[i];
@@ -27,6 +27,8 @@ std::vector<std::uint64_t> countInZone(const ParticleStore& particles, const Zon
     std::vector<std::uint64_t> counts(zone.materials.size());
     for (std::size_t i = 0; i < particles.size(); ++i)
     {
+        if (particles.retired(i)) // (taken out by an outlet, leaving the store at the next rebuild)
+            continue;
         const Vec3& x = particles.position[i];
         if (!(x.x >= zone.lo.x && x.y >= zone.lo.y && x.z >= zone.lo.z && x.x <= zone.hi.x &&
               x.y <= zone.hi.y && x.z <= zone.hi.z))

@@ -92,7 +92,7 @@ void TrackRecorder::record(const dem::World& world)
     for (const std::uint32_t id : ids_)
         for (std::size_t i = 0; i < world.particles.size(); ++i)
         {
-            if (world.particles.id[i] != id)
+            if (world.particles.id[i] != id || world.particles.retired(i)) // (a slot taken out keeps its id)
                 continue;
             appendNumber(rows, time);
             rows += ',' + std::to_string(id);

@@ -70,5 +70,23 @@ TEST(SpeciesMeasures, ZonesAreBoxesWithPossiblyInfiniteBounds)
               (std::vector<std::uint64_t>{0}));
 }
 
+TEST(SpeciesMeasures, ARetiredParticleIsNeitherASpeciesMemberNorInAZone)
+{
+    // An outlet's particle keeps its slot, with radius 0, until the next list rebuild
+    // (ParticleStore::retired): it has left the scene, so no measure counts it.
+    World world = twoSpecies();
+    world.particles.radius[0] = 0; // the M1 bead at (1, 0, 1) cm, retired
+    const std::vector<SpeciesMeasure> s = measureSpecies(world.particles, 2);
+    EXPECT_EQ(s[0].count, 2u);
+    Zone all;
+    all.name = "all";
+    all.lo = {-1, -1, -1};
+    all.hi = {1, 1, 1};
+    all.materials = {0, 1};
+    const std::vector<std::uint64_t> counts = countInZone(world.particles, all);
+    EXPECT_EQ(counts[0], 2u);
+    EXPECT_EQ(counts[1], 2u);
+}
+
 } // namespace
 } // namespace veridem::dem
