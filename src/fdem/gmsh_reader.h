@@ -1,6 +1,6 @@
-// Reader for Gmsh .msh files, ASCII format 2.2 and 4.1 (https://gmsh.info/doc/texinfo/gmsh.html,
-// section "MSH file format"). Only 3-node triangles (element type 2) are kept; points, lines and
-// other elements are skipped. The z coordinate must be 0 (2D meshes in the x-y plane).
+// The 2D FEM/DEM body of a Gmsh .msh file, read by the shared reader (io/gmsh_file.h: ASCII
+// formats 2.2 and 4.1, 3-node triangles kept, other elements skipped). Every node the triangles
+// use must lie in the x-y plane (z = 0).
 #pragma once
 
 #include "fdem/mesh.h"

@@ -1,6 +1,7 @@
 #include "io/surface_mesh_reader.h"
 
 #include "core/error.h"
+#include "io/gmsh_file.h"
 
 #include <algorithm>
 #include <array>
@@ -11,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <map>
 #include <sstream>
 
 namespace veridem::io
@@ -165,142 +165,6 @@ std::vector<Vec3> binaryStl(const std::string& bytes, const std::string& path, R
     return corners;
 }
 
-/// Gmsh 2.2: "$Nodes n / id x y z" and "$Elements n / id type ntags tags... nodes".
-/// Gmsh 4.1: entity blocks of node tags then coordinates, and of elements.
-std::vector<Vec3> gmsh(const std::string& text, const std::string& path, Real scale)
-{
-    Lines lines(text, path);
-    std::vector<std::string> w;
-    std::map<std::int64_t, Vec3> nodes;
-    std::vector<std::array<std::int64_t, 3>> triangles;
-    int major = 0;
-    const auto count = [&](const std::string& word)
-    {
-        const std::int64_t n = lines.integer(word);
-        if (n < 0 || n > (std::int64_t(1) << 32))
-            lines.fail("bad count '" + word + "'");
-        return n;
-    };
-    while (lines.next(w))
-    {
-        if (w[0] == "$MeshFormat")
-        {
-            lines.require(w, "the format line");
-            if (w.size() < 2 || (w[0] != "2.2" && w[0] != "4.1"))
-                lines.fail("Gmsh format '" + w[0] + "' is not supported (expected 2.2 or 4.1)");
-            if (w[1] != "0")
-                lines.fail("binary .msh files are not supported (save as ASCII)");
-            major = w[0] == "2.2" ? 2 : 4;
-        }
-        else if (w[0] == "$Nodes")
-        {
-            if (major == 0)
-                lines.fail("$Nodes before $MeshFormat");
-            lines.require(w, "the node count");
-            if (major == 2)
-            {
-                const std::int64_t n = count(w[0]);
-                for (std::int64_t k = 0; k < n; ++k)
-                {
-                    lines.require(w, "a node 'id x y z'");
-                    if (w.size() < 4)
-                        lines.fail("expected a node 'id x y z'");
-                    nodes[lines.integer(w[0])] =
-                        scale * Vec3{lines.number(w[1]), lines.number(w[2]), lines.number(w[3])};
-                }
-            }
-            else
-            {
-                if (w.size() < 4)
-                    lines.fail("expected 'numEntityBlocks numNodes minTag maxTag'");
-                const std::int64_t blocks = count(w[0]);
-                for (std::int64_t b = 0; b < blocks; ++b)
-                {
-                    lines.require(w, "a node block header");
-                    if (w.size() < 4)
-                        lines.fail("expected 'entityDim entityTag parametric numNodes'");
-                    const std::int64_t n = count(w[3]);
-                    std::vector<std::int64_t> tags;
-                    for (std::int64_t k = 0; k < n; ++k)
-                    {
-                        lines.require(w, "a node tag");
-                        tags.push_back(lines.integer(w[0]));
-                    }
-                    for (std::int64_t k = 0; k < n; ++k)
-                    {
-                        lines.require(w, "node coordinates 'x y z'");
-                        if (w.size() < 3)
-                            lines.fail("expected node coordinates 'x y z'");
-                        nodes[tags[std::size_t(k)]] =
-                            scale * Vec3{lines.number(w[0]), lines.number(w[1]), lines.number(w[2])};
-                    }
-                }
-            }
-        }
-        else if (w[0] == "$Elements")
-        {
-            if (major == 0)
-                lines.fail("$Elements before $MeshFormat");
-            lines.require(w, "the element count");
-            const auto node = [&](const std::string& word)
-            {
-                const std::int64_t id = lines.integer(word);
-                if (!nodes.count(id))
-                    lines.fail("element names node " + word + ", which is not defined");
-                return id;
-            };
-            if (major == 2)
-            {
-                const std::int64_t n = count(w[0]);
-                for (std::int64_t k = 0; k < n; ++k)
-                {
-                    lines.require(w, "an element");
-                    if (w.size() < 3)
-                        lines.fail("expected an element 'id type ntags ...'");
-                    const std::int64_t type = lines.integer(w[1]), tags = count(w[2]);
-                    if (type != 2)
-                        continue;
-                    if (std::int64_t(w.size()) != 3 + tags + 3)
-                        lines.fail("a triangle needs 3 nodes after its " + std::to_string(tags) + " tags");
-                    const std::size_t at = std::size_t(3 + tags);
-                    triangles.push_back({node(w[at]), node(w[at + 1]), node(w[at + 2])});
-                }
-            }
-            else
-            {
-                if (w.size() < 4)
-                    lines.fail("expected 'numEntityBlocks numElements minTag maxTag'");
-                const std::int64_t blocks = count(w[0]);
-                for (std::int64_t b = 0; b < blocks; ++b)
-                {
-                    lines.require(w, "an element block header");
-                    if (w.size() < 4)
-                        lines.fail("expected 'entityDim entityTag elementType numElements'");
-                    const std::int64_t type = lines.integer(w[2]), n = count(w[3]);
-                    for (std::int64_t k = 0; k < n; ++k)
-                    {
-                        lines.require(w, "an element");
-                        if (type != 2)
-                            continue;
-                        if (w.size() != 4)
-                            lines.fail("expected a triangle 'tag n1 n2 n3'");
-                        triangles.push_back({node(w[1]), node(w[2]), node(w[3])});
-                    }
-                }
-            }
-        }
-    }
-    if (major == 0)
-        throw InputError(path + ": no $MeshFormat section (not a Gmsh .msh file?)");
-    std::vector<Vec3> corners;
-    for (const auto& t : triangles)
-        for (const std::int64_t id : t)
-            corners.push_back(nodes[id]);
-    if (corners.empty())
-        throw InputError(path + ": no 3-node triangles (element type 2) in the mesh");
-    return corners;
-}
-
 /// Nine-column triangle text: a header line, then per line the x y z of three corners.
 std::vector<Vec3> triangleText(const std::string& text, const std::string& path, Real scale,
                                std::vector<std::size_t>* lines)
@@ -375,7 +239,14 @@ std::vector<Vec3> readStl(const std::string& path, Real scale)
 
 std::vector<Vec3> readGmshSurface(const std::string& path, Real scale)
 {
-    return gmsh(readAll(path), path, scale);
+    std::istringstream text(readAll(path));
+    const GmshTriangles mesh = readGmshTriangles(text, path);
+    std::vector<Vec3> corners;
+    corners.reserve(3 * mesh.triangles.size());
+    for (const auto& t : mesh.triangles)
+        for (const std::uint32_t n : t)
+            corners.push_back(scale * mesh.nodes[n]);
+    return corners;
 }
 
 std::vector<Vec3> readSurfaceMesh(const std::string& path, Real scale, std::vector<std::size_t>* lines)

@@ -3,7 +3,7 @@
 //   STL   ASCII or binary, told apart by content (a binary file's size is 84 + 50 n for the
 //         count n in its header; otherwise a file starting with "solid" and holding no zero
 //         byte is ASCII, anything else a truncated binary one);
-//   Gmsh  .msh format 2.2 or 4.1, ASCII; only 3-node triangles (element type 2) are kept;
+//   Gmsh  .msh format 2.2 or 4.1, ASCII (io/gmsh_file.h); only 3-node triangles are kept;
 //   text  .txt, nine columns: a header line (words, not numbers), then one triangle a line, the
 //         x y z of its three corners [m] separated by spaces or tabs (the DEM8 benchmark's walls).
 // Errors are InputError "file:line: what is wrong" (a binary STL: the triangle index).

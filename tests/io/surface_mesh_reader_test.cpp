@@ -110,6 +110,21 @@ TEST(SurfaceMeshReader, GmshFormats)
     EXPECT_EQ(io::readSurfaceMesh(write("v41.msh", v41)), kSquare);
 }
 
+// The walls' .msh reader is the 2D bodies' (io/gmsh_file.h): volumes and second-order elements
+// are skipped by the format's node counts, an element type the format does not define is refused.
+TEST(SurfaceMeshReader, GmshSkipsOtherElementsAndRefusesUnknownTypes)
+{
+    const std::string withTet =
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 "
+        "0.5\n5 0 0 1\n$EndNodes\n$Elements\n4\n1 4 2 0 1 1 2 3 5\n2 2 2 0 1 1 2 3\n3 11 0 1 2 3 5 1 2 3 4 "
+        "5 1\n4 2 2 0 1 1 3 4\n$EndElements\n";
+    EXPECT_EQ(io::readSurfaceMesh(write("tet.msh", withTet)), kSquare);
+    std::string unknown = withTet;
+    unknown.replace(unknown.find("3 11 0"), 6, "3 99 0");
+    EXPECT_NE(errorOf(write("u.msh", unknown)).find("u.msh:16: unknown element type 99"), std::string::npos)
+        << errorOf(write("u.msh", unknown));
+}
+
 TEST(SurfaceMeshReader, BadFilesAreNamed)
 {
     EXPECT_NE(errorOf(tempPath("missing.stl")).find("missing.stl: mesh file not found"), std::string::npos);
