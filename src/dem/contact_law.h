@@ -8,6 +8,7 @@
 
 #include "core/hot.h"
 #include "core/vec3.h"
+#include "dem/contact_assembly.h"
 #include "dem/lanes.h"
 #include "dem/materials.h"
 #include "dem/models/cohesion.h"
@@ -380,7 +381,7 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
             rollingTorque = viscousRollingTorqueOf<T>(p.rollingViscous, in.effectiveRadius, load, resisted);
         else
         {
-            const T kr = 2.25 * c.kn * muR * muR;
+            const T kr = epsdRollingStiffness<T>(c.kn, muR);
             const T cr = p.rollingDamping * 2.0 * laneSqrt(in.rollingInertia * kr);
             const RollingSpringResultOf<T> r =
                 epsdRollingTorqueOf<T>(kr, cr, muR, load, history.rollingSpring, resisted, dt);
@@ -409,7 +410,7 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
             history.rollingSpring = select(formed, history.rollingSpring, V{});
         }
     }
-    return {force * in.normal + t.force, t.force, rollingTorque, force, t.sliding};
+    return {contactForceOf<T>(in.normal, force, t.force), t.force, rollingTorque, force, t.sliding};
 }
 
 /// The law for one contact of a pair with parameters p (the scalar path: width one).
