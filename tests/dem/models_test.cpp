@@ -153,7 +153,7 @@ TEST(ContactLaw, FrictionAndRollingCappedByNormalForce)
     p.rollingLength = 1e-4;
     ContactInput in;
     in.normal = {0, 0, 1};
-    in.overlap = 1e-4; // (> |u| dt: no transition weighting of the dashpot)
+    in.overlap = 1e-6;
     in.relativeVelocity = {5, 0, 0};
     in.relativeAngularVelocity = {0, 7, 0};
     in.effectiveMass = 1e-2;
