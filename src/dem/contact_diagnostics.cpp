@@ -1,6 +1,7 @@
 #include "dem/contact_diagnostics.h"
 
 #include "dem/contact_frame.h"
+#include "dem/contact_input.h"
 #include "dem/contact_law.h"
 #include "dem/pair_kernel.h"
 
@@ -149,9 +150,9 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
             const Real touching = p.radius[i] + p.radius[j] + list.reach;
             if (world.pairHistory.formed[a] && params.normalModel == NormalModel::Jkr && books(i, j) &&
                 lengthSquared(p.position[i] - p.position[j]) >= touching * touching)
-                *brokenEnergy += jkrBreakingEnergy(params.effectiveModulus,
-                                                   p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]),
-                                                   params.workOfAdhesion);
+                *brokenEnergy +=
+                    jkrBreakingEnergy(params.effectiveModulus, pairEffectiveRadius(p.radius[i], p.radius[j]),
+                                      params.workOfAdhesion);
         }
     // Walls: the contact frame of the force stage (wallContactFrame, contact_frame.h).
     const WallContactList& walls = world.wallContacts;
@@ -170,20 +171,8 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
         if (!gap.touching)
             continue;
         const PairParams& params = world.pairs(p.material[i], wall.material);
-        const ContactFrameOf<Real> f =
-            wallContactFrame(gap.normal, gap.overlap, p.position[i], p.velocity[i], p.angularVelocity[i], r,
-                             surfaceMotion(wall, -0.5 * dt), 0.5 * dt);
-        const Vec3 arm = wallArm(r, gap.normal);
-        ContactInput in;
-        in.normal = gap.normal;
-        in.overlap = gap.overlap;
-        in.relativeVelocity = f.relativeVelocity;
-        in.angularVelocity = p.angularVelocity[i];
-        in.relativeAngularVelocity = p.angularVelocity[i] - wall.motion.angularVelocity;
-        in.effectiveMass = p.mass[i];
-        in.effectiveRadius = gap.effectiveRadius;
-        in.spinInertia = 1.0 / p.invInertia[i];
-        in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], r);
+        const ContactInput in =
+            wallContactInput(particleState(p, i), surfaceMotion(wall, -0.5 * dt), gap, dt);
         ContactHistory history = world.wallHistory.at(k);
         LawTerms terms;
         const ContactOutput out = evaluateContactReporting(params, in, history, dt, terms);
@@ -192,7 +181,7 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
         rec.partner = walls.wall[k];
         rec.wall = true;
         rec.leverI = r;
-        rec.point = p.position[i] + arm;
+        rec.point = p.position[i] + wallArm(r, gap.normal);
         records.push_back(rec);
     }
     return records;

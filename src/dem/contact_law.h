@@ -8,6 +8,7 @@
 
 #include "core/hot.h"
 #include "core/vec3.h"
+#include "dem/contact_assembly.h"
 #include "dem/lanes.h"
 #include "dem/materials.h"
 #include "dem/models/cohesion.h"
@@ -15,7 +16,9 @@
 #include "dem/models/rolling.h"
 #include "dem/models/tangential.h"
 
+#include <iterator>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace veridem::dem
@@ -28,46 +31,48 @@ template <NormalModel N, RollingModel R> struct LawModel
     static constexpr RollingModel rolling = R;
 };
 
-/// Calls f(LawModel<...>{}) for the models of p (one switch per call, outside the law).
-template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairParams& p, F&& f)
-{
-    const auto rolling = [&]<NormalModel N>() VERIDEM_INLINE_LAMBDA -> decltype(auto)
-    {
-        switch (p.rollingModel)
-        {
-        case RollingModel::ConstantTorque:
-            return f(LawModel<N, RollingModel::ConstantTorque>{});
-        case RollingModel::Epsd:
-            return f(LawModel<N, RollingModel::Epsd>{});
-        case RollingModel::Viscous:
-            return f(LawModel<N, RollingModel::Viscous>{});
-        case RollingModel::ConstantTorqueAbsolute:
-            return f(LawModel<N, RollingModel::ConstantTorqueAbsolute>{});
-        default:
-            return f(LawModel<N, RollingModel::None>{});
-        }
-    };
-    switch (p.normalModel)
-    {
-    case NormalModel::Hertz:
-        return rolling.template operator()<NormalModel::Hertz>();
-    case NormalModel::Jkr:
-        return rolling.template operator()<NormalModel::Jkr>();
-    case NormalModel::Dmt:
-        return rolling.template operator()<NormalModel::Dmt>();
-    default:
-        return rolling.template operator()<NormalModel::Linear>();
-    }
-}
-
-/// The number of model combinations (LawModel) and each one's index: normal * 5 + rolling.
-inline constexpr unsigned kRollingModelCount = 5;
-inline constexpr unsigned kNormalModelCount = 4;
+/// The number of model combinations (LawModel) and each one's index: normal * count + rolling.
+inline constexpr unsigned kRollingModelCount = std::size(kRollingModelList);
+inline constexpr unsigned kNormalModelCount = std::size(kNormalModelList);
 inline constexpr unsigned kLawModels = kNormalModelCount * kRollingModelCount;
 inline unsigned lawModelIndex(const PairParams& p)
 {
     return static_cast<unsigned>(p.normalModel) * kRollingModelCount + static_cast<unsigned>(p.rollingModel);
 }
+
+/// Calls f.operator()<model>() for the listed model equal to `value` (one comparison per listed
+/// model; a value outside the list stops the run: unregisteredContactModel).
+template <const auto& kList, std::size_t kIndex = 0, class E, class F>
+VERIDEM_HOT_INLINE decltype(auto) dispatchListedModel(E value, F& f)
+{
+    constexpr E kModel = kList[kIndex].model;
+    if constexpr (kIndex + 1 < std::size(kList))
+    {
+        if (value == kModel)
+            return f.template operator()<kModel>();
+        return dispatchListedModel<kList, kIndex + 1>(value, f);
+    }
+    else
+    {
+        if (value != kModel) [[unlikely]]
+            unregisteredContactModel(static_cast<unsigned>(value));
+        return f.template operator()<kModel>();
+    }
+}
+
+/// Calls f(LawModel<...>{}) for the models of p (outside the law). Every listed model is
+/// dispatched by construction; there is no default.
+template <class F> VERIDEM_HOT_INLINE decltype(auto) withLawModel(const PairParams& p, F&& f)
+{
+    auto normal = [&]<NormalModel N>() VERIDEM_INLINE_LAMBDA -> decltype(auto)
+    {
+        auto rolling = [&]<RollingModel R>() VERIDEM_INLINE_LAMBDA -> decltype(auto)
+        { return f(LawModel<N, R>{}); };
+        return dispatchListedModel<kRollingModelList>(p.rollingModel, rolling);
+    };
+    return dispatchListedModel<kNormalModelList>(p.normalModel, normal);
+}
+
 /// The lawModelIndex bits of the models with rolling resistance, and of the JKR models (whose
 /// contacts carry a formed/not-formed state: their touch criterion has hysteresis).
 inline constexpr unsigned kRollingModels = []
@@ -79,29 +84,21 @@ inline constexpr unsigned kRollingModels = []
 }();
 inline constexpr unsigned kJkrModels = ((1u << kRollingModelCount) - 1)
                                        << (static_cast<unsigned>(NormalModel::Jkr) * kRollingModelCount);
+static_assert(kLawModels <= 32, "lawModelIndex bits are kept in an unsigned mask");
 
-/// Calls f(LawModel<...>{}, index) for every model whose bit `index` is set in `mask`.
+/// Calls f(LawModel<...>{}, index) for every model whose bit `index` is set in `mask`, in index
+/// order (every combination of the lists, by construction).
 template <class F> VERIDEM_HOT_INLINE void forEachLawModel(unsigned mask, F&& f)
 {
-    using N = NormalModel;
-    using R = RollingModel;
-    const auto forNormal = [&]<N kNormal>(unsigned base) VERIDEM_INLINE_LAMBDA
+    [&]<unsigned... kIndex>(std::integer_sequence<unsigned, kIndex...>) VERIDEM_INLINE_LAMBDA
     {
-        if (mask & (1u << base))
-            f(LawModel<kNormal, R::None>{}, base);
-        if (mask & (2u << base))
-            f(LawModel<kNormal, R::ConstantTorque>{}, base + 1);
-        if (mask & (4u << base))
-            f(LawModel<kNormal, R::Epsd>{}, base + 2);
-        if (mask & (8u << base))
-            f(LawModel<kNormal, R::Viscous>{}, base + 3);
-        if (mask & (16u << base))
-            f(LawModel<kNormal, R::ConstantTorqueAbsolute>{}, base + 4);
-    };
-    forNormal.template operator()<N::Linear>(0);
-    forNormal.template operator()<N::Hertz>(kRollingModelCount);
-    forNormal.template operator()<N::Jkr>(2 * kRollingModelCount);
-    forNormal.template operator()<N::Dmt>(3 * kRollingModelCount);
+        (((mask & (1u << kIndex)) != 0 ? f(LawModel<kNormalModelList[kIndex / kRollingModelCount].model,
+                                                    kRollingModelList[kIndex % kRollingModelCount].model>{},
+                                           kIndex)
+                                       : void()),
+         ...);
+    }
+    (std::make_integer_sequence<unsigned, kLawModels>{});
 }
 
 /// The pair parameters as the law reads them (one value per lane).
@@ -124,23 +121,36 @@ template <class T> struct LawParamsOf
 };
 using LawParams = LawParamsOf<Real>;
 
-/// The law's parameters of a pair.
+/// Calls f(a.field, b.field) for every field of two LawParamsOf (of any number types: a lane
+/// twin, batch::LaneParams, is a LawParamsOf of columns), in the order of the declaration. The
+/// fields are bound from the declaration itself: a field added to LawParamsOf stops this from
+/// compiling until it is bound here, and no reordering can pair two different fields.
+template <class A, class B, class F> VERIDEM_HOT_INLINE void forEachLawParam(A& a, B& b, F&& f)
+{
+    auto& [a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13] = a;
+    auto& [b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11, b12, b13] = b;
+    f(a0, b0), f(a1, b1), f(a2, b2), f(a3, b3), f(a4, b4), f(a5, b5), f(a6, b6);
+    f(a7, b7), f(a8, b8), f(a9, b9), f(a10, b10), f(a11, b11), f(a12, b12), f(a13, b13);
+}
+
+/// The law's parameters of a pair (designated: a reordering of LawParamsOf does not compile).
 inline LawParams lawParams(const PairParams& p)
 {
-    return {p.kn,
-            p.ktRatio,
-            p.effectiveModulus,
-            p.effectiveShearModulus,
-            p.dampingRate,
-            isHertzian(p.normalModel) ? hertzDampingFactor(p.hertzBeta) : 2.0 * p.dampingRatio,
-            p.tangentialDampingRatio,
-            p.mu,
-            p.rollingLength,
-            p.rollingDimensionless,
-            p.rollingDampingRatio,
-            p.rollingTwist ? 1.0 : 0.0,
-            p.rollingViscous,
-            p.workOfAdhesion};
+    return {.kn = p.kn,
+            .ktRatio = p.ktRatio,
+            .modulus = p.effectiveModulus,
+            .shearModulus = p.effectiveShearModulus,
+            .dampingRate = p.dampingRate,
+            .dampingFactor =
+                isHertzian(p.normalModel) ? hertzDampingFactor(p.hertzBeta) : 2.0 * p.dampingRatio,
+            .etaRatio = p.tangentialDampingRatio,
+            .mu = p.mu,
+            .rollingLength = p.rollingLength,
+            .rollingDimless = p.rollingDimensionless,
+            .rollingDamping = p.rollingDampingRatio,
+            .rollingTwist = p.rollingTwist ? 1.0 : 0.0,
+            .rollingViscous = p.rollingViscous,
+            .adhesion = p.workOfAdhesion};
 }
 
 /// Geometry and kinematics of one contact, as seen by particle i.
@@ -295,7 +305,7 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
     const T normalSpeed = dot(in.relativeVelocity, in.normal); // < 0 while approaching
     T elastic;
     if constexpr (Model::normal == NormalModel::Linear)
-        elastic = c.kn * in.overlap;
+        elastic = linearElasticForce<T>(c.kn, in.overlap);
     else if constexpr (Model::normal == NormalModel::Hertz)
         elastic = hertzElasticForce<T>(p.modulus, in.effectiveRadius, in.overlap);
     else if constexpr (Model::normal == NormalModel::Dmt)
@@ -325,10 +335,8 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
     // bodies are neglected in this estimate). Written with m* in numerator and denominator,
     // u = (m* u_half + dt/2 elastic) / (m* + dt/2 eta), so that it costs one division.
     const T dampingWeight = dashpotWeight * c.etaN;
-    const Real halfStep = 0.5 * dt;
-    const T normalSpeedEnd =
-        (in.effectiveMass * normalSpeed + halfStep * elastic) / (in.effectiveMass + halfStep * dampingWeight);
-    T normalForce = elastic - dampingWeight * normalSpeedEnd;
+    T normalForce =
+        springDashpotNormalForce<T>(elastic, dampingWeight, normalSpeed, in.effectiveMass, 0.5 * dt);
     // A Hertz contact never pulls: Fn = max(0, ...), with beta computed for the clipped law
     // (models/normal.h). The clip agrees with the end-of-step speed above: the estimated force,
     // m* (elastic - eta u_half) / (m* + dt/2 eta), has the sign of the force at the half-step
@@ -380,7 +388,7 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
             rollingTorque = viscousRollingTorqueOf<T>(p.rollingViscous, in.effectiveRadius, load, resisted);
         else
         {
-            const T kr = 2.25 * c.kn * muR * muR;
+            const T kr = epsdRollingStiffness<T>(c.kn, muR);
             const T cr = p.rollingDamping * 2.0 * laneSqrt(in.rollingInertia * kr);
             const RollingSpringResultOf<T> r =
                 epsdRollingTorqueOf<T>(kr, cr, muR, load, history.rollingSpring, resisted, dt);
@@ -409,7 +417,7 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
             history.rollingSpring = select(formed, history.rollingSpring, V{});
         }
     }
-    return {force * in.normal + t.force, t.force, rollingTorque, force, t.sliding};
+    return {contactForceOf<T>(in.normal, force, t.force), t.force, rollingTorque, force, t.sliding};
 }
 
 /// The law for one contact of a pair with parameters p (the scalar path: width one).

@@ -5,10 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace veridem::dem
 {
+
+void unregisteredContactModel(unsigned value)
+{
+    std::fprintf(stderr, "veridem: internal error: contact model %u is not in its list (dem/materials.h)\n",
+                 value);
+    std::abort();
+}
 
 namespace
 {

@@ -11,6 +11,7 @@
 
 #include "core/vec3.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -26,6 +27,19 @@ enum class NormalModel
     Jkr,    // Hertz-Mindlin elasticity with JKR adhesion (models/cohesion.h; needs surfaceEnergy)
     Dmt     // Hertz-Mindlin elasticity with DMT adhesion (models/cohesion.h)
 };
+
+/// A registered model: its enumerator and its scene name (`model`, `rolling_model`).
+template <class Model> struct ModelEntry
+{
+    Model model;
+    const char* name;
+};
+/// Every normal model, in the enumerators' order: the scene reader names, and the law dispatches
+/// (withLawModel, forEachLawModel, dem/contact_law.h), exactly the models listed here.
+inline constexpr ModelEntry<NormalModel> kNormalModelList[] = {{NormalModel::Linear, "linear"},
+                                                               {NormalModel::Hertz, "hertz"},
+                                                               {NormalModel::Jkr, "jkr"},
+                                                               {NormalModel::Dmt, "dmt"}};
 
 /// True for the models whose contacts pull (JKR, DMT).
 constexpr bool isAdhesive(NormalModel m)
@@ -46,6 +60,30 @@ enum class RollingModel
     Viscous,               // type B, torque proportional to the relative rolling speed
     ConstantTorqueAbsolute // type A opposing the particle's own w (EDEM "standard", MUSEN)
 };
+
+/// Every rolling model, in the enumerators' order (as kNormalModelList).
+inline constexpr ModelEntry<RollingModel> kRollingModelList[] = {
+    {RollingModel::None, "none"},
+    {RollingModel::ConstantTorque, "constant_torque"},
+    {RollingModel::Epsd, "epsd"},
+    {RollingModel::Viscous, "viscous"},
+    {RollingModel::ConstantTorqueAbsolute, "constant_torque_absolute"}};
+
+/// Whether each list holds its enumerators in order (entry k is enumerator k): the model index
+/// (lawModelIndex) and the dispatch rely on it.
+template <class Model, std::size_t kCount>
+constexpr bool listedInOrder(const ModelEntry<Model> (&list)[kCount])
+{
+    for (std::size_t k = 0; k < kCount; ++k)
+        if (static_cast<std::size_t>(list[k].model) != k)
+            return false;
+    return true;
+}
+static_assert(listedInOrder(kNormalModelList) && listedInOrder(kRollingModelList));
+
+/// A model value outside its list: never made by the scene reader, which names only listed models;
+/// the law's dispatch stops the run with this message rather than run another model's law.
+[[noreturn]] void unregisteredContactModel(unsigned value);
 
 struct Material
 {

@@ -1,6 +1,8 @@
 #include "dem/pair_kernel.h"
 
+#include "dem/contact_assembly.h"
 #include "dem/contact_frame.h"
+#include "dem/contact_input.h"
 #include "dem/contact_law.h"
 #include "dem/exec/lane_memory.h"
 
@@ -30,15 +32,8 @@ using namespace batch; // LawBatch, PairBatch, kBatch, lawLanes (dem/exec/law_ba
     }
     for (std::size_t m = 0; m < padded; ++m)
     {
-        const std::uint32_t i = b.i[m], j = b.j[m];
-        const Real ri = b.ri[m], rj = b.rj[m];
         ContactInput in;
-        in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
-        in.angularVelocity = p.angularVelocity[i];
-        in.effectiveRadius = pairEffectiveRadius(ri, rj);
-        in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-        in.rollingInertia =
-            pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
+        setPairRollingInput(in, p, b.i[m], b.j[m]);
         law.setRollingInputs(m, in, history.keepRolling ? history.rolling[b.candidate[m]] : Vec3{});
     }
 }
@@ -184,25 +179,21 @@ VERIDEM_HOT_INLINE void pairContactsLanes(const World& world, const PairSink& si
             const Lanes normalForce = load<Lanes>(law.normalForce + m), ftx = load<Lanes>(law.ftx + m),
                         fty = load<Lanes>(law.fty + m), ftz = load<Lanes>(law.ftz + m);
             const Lanes leverI = load<Lanes>(leverIs + m), leverJ = load<Lanes>(leverJs + m);
-            const Lanes fx = normalForce * nx + ftx, fy = normalForce * ny + fty, fz = normalForce * nz + ftz;
-            // Torques: rolling - l_i (n x Ft) on i, -rolling - l_j (n x Ft) on j (rolling = +0 without
-            // a rolling model, so -rolling = -0, as the scalar path's).
-            const Lanes ttx = ny * ftz - nz * fty, tty = nz * ftx - nx * ftz, ttz = nx * fty - ny * ftx;
-            Lanes rx = zero, ry = zero, rz = zero;
+            // F = Fn n + Ft; torques M_r - l_i (n x Ft) on i, -M_r - l_j (n x Ft) on j
+            // (contact_assembly.h; M_r = +0 without a rolling model, so -M_r = -0, as the scalar path's).
+            const V3<Lanes> n{nx, ny, nz}, ft{ftx, fty, ftz};
+            V3<Lanes> rolling{zero, zero, zero};
             if constexpr (kRolling)
-            {
-                rx = load<Lanes>(law.torqueX + m);
-                ry = load<Lanes>(law.torqueY + m);
-                rz = load<Lanes>(law.torqueZ + m);
-            }
-            const Lanes tix = rx - leverI * ttx, tiy = ry - leverI * tty, tiz = rz - leverI * ttz;
-            const Lanes tjx = -rx - leverJ * ttx, tjy = -ry - leverJ * tty, tjz = -rz - leverJ * ttz;
+                rolling = {load<Lanes>(law.torqueX + m), load<Lanes>(law.torqueY + m),
+                           load<Lanes>(law.torqueZ + m)};
+            const V3<Lanes> f = contactForceOf<Lanes>(n, normalForce, ft);
+            const PairTorquesOf<Lanes> t = pairContactTorques<Lanes>(n, ft, rolling, leverI, leverJ);
 
             // Scatter: one (x, y, z, 0) vector per contact and sum.
             Lanes4 force[kLanes], torqueI[kLanes], torqueJ[kLanes], spring[kLanes];
-            transpose(fx, fy, fz, force);
-            transpose(tix, tiy, tiz, torqueI);
-            transpose(tjx, tjy, tjz, torqueJ);
+            transpose(f.x, f.y, f.z, force);
+            transpose(t.onI.x, t.onI.y, t.onI.z, torqueI);
+            transpose(t.onJ.x, t.onJ.y, t.onJ.z, torqueJ);
             transpose(load<Lanes>(law.springX + m), load<Lanes>(law.springY + m),
                       load<Lanes>(law.springZ + m), spring);
             const std::size_t lanes = std::min(kLanes, count - m);
@@ -258,23 +249,6 @@ PairKernel pairKernelFor(exec::Isa isa)
     return isa == exec::Isa::Avx2 ? pairContactsAvx2 : pairContactsPortable;
 }
 
-ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint32_t j,
-                              const ContactFrameOf<Real>& frame, Real effectiveMass)
-{
-    const Real ri = p.radius[i], rj = p.radius[j];
-    ContactInput in;
-    in.normal = frame.normal;
-    in.overlap = frame.overlap;
-    in.relativeVelocity = frame.relativeVelocity;
-    in.relativeAngularVelocity = p.angularVelocity[i] - p.angularVelocity[j];
-    in.angularVelocity = p.angularVelocity[i];
-    in.effectiveMass = effectiveMass;
-    in.effectiveRadius = pairEffectiveRadius(ri, rj);
-    in.spinInertia = 1.0 / (p.invInertia[i] + p.invInertia[j]);
-    in.rollingInertia = pairRollingInertia(p.invInertia[i], p.mass[i], ri, p.invInertia[j], p.mass[j], rj);
-    return in;
-}
-
 PairContactResult pairContactAt(const World& world, std::uint32_t i, std::uint32_t j, const Vec3& separation,
                                 Real effectiveMass, ContactHistory& history, Real dt)
 {
@@ -285,9 +259,9 @@ PairContactResult pairContactAt(const World& world, std::uint32_t i, std::uint32
                                                           p.angularVelocity[i], p.angularVelocity[j]);
     const ContactInput in = pairContactInput(p, i, j, f, effectiveMass);
     const ContactOutput out = evaluateContact(params, in, history, dt);
-    const Vec3 tangentialTorque = cross(in.normal, out.tangentialForce); // n x Ft
-    return {out.force, out.rollingTorque - f.leverI * tangentialTorque,
-            -out.rollingTorque - f.leverJ * tangentialTorque, in.overlap};
+    const PairTorquesOf<Real> t =
+        pairContactTorques<Real>(in.normal, out.tangentialForce, out.rollingTorque, f.leverI, f.leverJ);
+    return {out.force, t.onI, t.onJ, in.overlap};
 }
 
 /// Touching candidate k through the general contact law (any model), added into the sink.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "dem/contact_frame.h"
+#include "dem/contact_input.h"
 #include "dem/exec/pair_selection.h"
 #include "dem/world.h"
 #include "exec/isa.h"
@@ -105,11 +106,6 @@ using PairKernel = void (*)(const World&, const PairSink&, Real dt, std::size_t 
 
 /// The pair kernel compiled for `isa` (four lanes with AVX2, two portable).
 PairKernel pairKernelFor(exec::Isa isa);
-
-/// The contact input of spheres i and j from their frame (pairContactFrame): every field the law
-/// can read, with the effective mass m* [kg] given (the neighbour list keeps it per candidate).
-ContactInput pairContactInput(const ParticleStore& p, std::uint32_t i, std::uint32_t j,
-                              const ContactFrameOf<Real>& frame, Real effectiveMass);
 
 /// A pair contact's results: force on i [N] (-force on j), torques on i and j [N m], overlap [m].
 struct PairContactResult

@@ -71,7 +71,7 @@ Limit contactLimit(const PairParams& params, Real effectiveMass, Real effectiveR
     if (params.rollingModel == RollingModel::Epsd)
     {
         const Real muR = rollingFrictionLength(params, effectiveRadius);
-        omegaMax = std::fmax(omegaMax, std::sqrt(2.25 * kn * muR * muR / rollingInertia));
+        omegaMax = std::fmax(omegaMax, std::sqrt(epsdRollingStiffness<Real>(kn, muR) / rollingInertia));
     }
     const Real critical = 2.0 / omegaMax * (std::sqrt(1 + zeta * zeta) - zeta);
     if (params.rollingModel == RollingModel::Viscous)

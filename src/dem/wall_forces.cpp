@@ -5,10 +5,12 @@
 // arm, the contact-point velocity against the wall's surface velocity at the half step). Passes:
 // planes and meshes only (frames once per step; a flat mesh slot is its plane, flatSlotGap; a
 // general mesh group is matched once at its first slot, matchMeshGroupAt), any walls in lanes
-// (frames once per call), and the scalar path; the same bits from each. (Above 500 lines: the
-// three passes and the always-inlined helpers they share are one stage, compiled into each
-// instruction-set variant here; a split would move the helpers to a private header.)
+// (frames once per call), and the scalar path; the same bits from each. Every pass assembles a
+// contact's force and torque with dem/contact_assembly.h and builds its input with
+// dem/contact_input.h.
+#include "dem/contact_assembly.h"
 #include "dem/contact_frame.h"
+#include "dem/contact_input.h"
 #include "dem/contact_law.h"
 #include "dem/exec/law_batch.h"
 #include "dem/forces.h"
@@ -55,27 +57,6 @@ VERIDEM_HOT_INLINE WallGap slotGap(WallContactList& list, std::size_t k, const W
     if (group->isFresh(k - group->first))
         history.forget(k);
     return gap;
-}
-
-/// The contact input of particle i touching a wall moving with `motion` at the half step
-/// (surfaceMotion(wall, -dt/2); gap from wallGap), as the contact law takes it; `arm` is set to
-/// the lever arm from the centre to the contact point [m].
-VERIDEM_HOT_INLINE ContactInput wallContactInput(const ParticleState& s, const SurfaceMotion& motion,
-                                                 const WallGap& gap, Real dt, Vec3& arm)
-{
-    const ContactFrameOf<Real> frame = wallContactFrame(gap.normal, gap.overlap, s.position, s.velocity,
-                                                        s.angularVelocity, s.radius, motion, 0.5 * dt);
-    arm = wallArm(s.radius, gap.normal);
-    ContactInput in;
-    in.normal = gap.normal;
-    in.overlap = gap.overlap;
-    in.relativeVelocity = frame.relativeVelocity;
-    in.angularVelocity = s.angularVelocity;
-    in.relativeAngularVelocity = s.angularVelocity - motion.angularVelocity;
-    in.effectiveMass = s.mass;
-    in.effectiveRadius = gap.effectiveRadius;
-    in.spinInertia = 1.0 / s.invInertia;
-    return in;
 }
 
 /// Folds the overlap [m] of a touching wall contact of particle i (radius [m]) into `health`: the
@@ -159,9 +140,8 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
             const Vec3 normal{b.nx[q], b.ny[q], b.nz[q]}, tangential{b.ftx[q], b.fty[q], b.ftz[q]};
             history.set(b.slot[q],
                         ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
-            const Vec3 arm = wallArm(p.radius[i], normal);
-            const Vec3 f = b.normalForce[q] * normal + tangential,
-                       t = b.rollingTorqueOf(q) + cross(arm, tangential);
+            const Vec3 f = contactForceOf<Real>(normal, b.normalForce[q], tangential),
+                       t = wallContactTorque(b.rollingTorqueOf(q), wallArm(p.radius[i], normal), tangential);
             if (loads)
                 recordWallLoad(world.wallContacts, b.slot[q], p.position[i], f, t);
             addWallContact(p, i, f, t, b.overlap[q], health);
@@ -194,16 +174,12 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         }
         ++health.touching;
         const Wall& wall = world.walls[w];
-        Vec3 arm;
-        ContactInput in = wallContactInput(particleState(p, i), frame.motion, gap, dt, arm);
+        const ContactInput in = wallContactInput(particleState(p, i), frame.motion, gap, dt);
         b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass, history.spring[k]);
         if (!uniform)
             addContactLaw(b, m, world.pairs(p.material[i], wall.material));
         if (!uniform || uniform->models != 1u) // (as wallContactScalar)
-        {
-            in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], p.radius[i]);
             b.setRollingInputs(m, in, history.keepRolling ? history.rolling[k] : Vec3{});
-        }
         if (++m == kBatch)
             run();
     }
@@ -260,11 +236,9 @@ bool planeFrames(const std::vector<Wall>& walls, Real dt, PlaneFrame* frames, bo
         const std::size_t k = b.slot[q];
         const Real r = p.radius[i];
         ContactInput in;
-        in.relativeAngularVelocity = p.angularVelocity[i] - frames[list.wall[k]].motion.angularVelocity;
-        in.angularVelocity = p.angularVelocity[i];
         in.effectiveRadius = r;
-        in.spinInertia = 1.0 / p.invInertia[i];
-        in.rollingInertia = wallRollingInertia(in.spinInertia, p.mass[i], r);
+        setWallRollingInput(in, p.angularVelocity[i], p.mass[i], p.invInertia[i], r,
+                            frames[list.wall[k]].motion.angularVelocity);
         b.setRollingInputs(q, in, history.keepRolling ? history.rolling[k] : Vec3{});
     }
 }
@@ -339,9 +313,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
                             ContactHistory{{b.springX[q], b.springY[q], b.springZ[q]}, b.rollingSpringOf(q)});
             else
                 spring[b.slot[q]] = {b.springX[q], b.springY[q], b.springZ[q]};
-            const Vec3 arm = wallArm(radius[i], normal);
-            const Vec3 f = b.normalForce[q] * normal + tangential,
-                       t = b.rollingTorqueOf(q) + cross(arm, tangential);
+            const Vec3 f = contactForceOf<Real>(normal, b.normalForce[q], tangential),
+                       t = wallContactTorque(b.rollingTorqueOf(q), wallArm(radius[i], normal), tangential);
             force[i].x += f.x;
             force[i].y += f.y;
             force[i].z += f.z;
@@ -458,15 +431,12 @@ VERIDEM_HOT_INLINE void wallContactScalar(World& world, Real dt, std::size_t k, 
     }
     ++health.touching;
     const PairParams& params = world.pairs(s.material, wall.material);
-    Vec3 arm;
-    ContactInput in = wallContactInput(s, surfaceMotion(wall, -0.5 * dt), gap, dt, arm);
-    if (params.rollingModel == RollingModel::Epsd)
-        in.rollingInertia = wallRollingInertia(in.spinInertia, s.mass, s.radius);
-
+    const ContactInput in = wallContactInput(s, surfaceMotion(wall, -0.5 * dt), gap, dt);
     ContactHistory history = store.at(k);
     const ContactOutput out = evaluateContact(params, in, history, dt);
     store.set(k, history);
-    const Vec3 contactTorque = out.rollingTorque + cross(arm, out.tangentialForce);
+    const Vec3 contactTorque =
+        wallContactTorque(out.rollingTorque, wallArm(s.radius, gap.normal), out.tangentialForce);
     if (world.wallContacts.recordLoads)
         recordWallLoad(world.wallContacts, k, s.position, out.force, contactTorque);
     force += out.force;

@@ -22,12 +22,33 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace veridem::io
 {
 
 namespace
 {
+
+/// The scene names of a model list (dem/materials.h: kNormalModelList, kRollingModelList).
+template <class Model, std::size_t kCount>
+std::vector<std::string> modelNames(const dem::ModelEntry<Model> (&list)[kCount])
+{
+    std::vector<std::string> names;
+    for (const dem::ModelEntry<Model>& entry : list)
+        names.emplace_back(entry.name);
+    return names;
+}
+
+/// The listed model named `name` (one of modelNames(list): TableReader::choice checked it).
+template <class Model, std::size_t kCount>
+Model listedModel(const dem::ModelEntry<Model> (&list)[kCount], const std::string& name)
+{
+    for (const dem::ModelEntry<Model>& entry : list)
+        if (name == entry.name)
+            return entry.model;
+    throw std::logic_error("unlisted model '" + name + "'");
+}
 
 dem::Material readMaterial(TableReader& t)
 {
@@ -38,11 +59,8 @@ dem::Material readMaterial(TableReader& t)
                        "state.csv and particles.csv)");
     m.density = t.requiredNumber("density");
     t.requirePositive("density", m.density, "kg/m^3");
-    const std::string model = t.choice("model", "linear", {"linear", "hertz", "jkr", "dmt"});
-    m.normalModel = model == "linear"  ? dem::NormalModel::Linear
-                    : model == "hertz" ? dem::NormalModel::Hertz
-                    : model == "jkr"   ? dem::NormalModel::Jkr
-                                       : dem::NormalModel::Dmt;
+    m.normalModel =
+        listedModel(dem::kNormalModelList, t.choice("model", "linear", modelNames(dem::kNormalModelList)));
     if (m.normalModel == dem::NormalModel::Linear)
     {
         m.normalStiffness = t.requiredNumber("kn");
@@ -79,8 +97,7 @@ dem::Material readMaterial(TableReader& t)
     m.friction = t.number("friction", 0.5);
     t.requireNonNegative("friction", m.friction, "");
     const std::string rolling =
-        t.choice("rolling_model", "constant_torque",
-                 {"none", "constant_torque", "epsd", "viscous", "constant_torque_absolute"});
+        t.choice("rolling_model", "constant_torque", modelNames(dem::kRollingModelList));
     m.rollingFrictionLength = t.number("rolling_friction", 0.0);
     t.requireNonNegative("rolling_friction", m.rollingFrictionLength, "m");
     m.rollingFrictionDimensionless = t.number("rolling_friction_dimensionless", 0.0);
@@ -95,11 +112,9 @@ dem::Material readMaterial(TableReader& t)
     if (rolling == "viscous" && !(m.rollingViscousCoefficient > 0))
         t.fail("rolling_viscous_coefficient", "must be > 0 s/m for rolling_model = \"viscous\"");
     const bool anyRolling = m.rollingFrictionLength > 0 || m.rollingFrictionDimensionless > 0;
-    m.rollingModel = rolling == "viscous"                    ? dem::RollingModel::Viscous
-                     : !anyRolling || rolling == "none"      ? dem::RollingModel::None
-                     : rolling == "epsd"                     ? dem::RollingModel::Epsd
-                     : rolling == "constant_torque_absolute" ? dem::RollingModel::ConstantTorqueAbsolute
-                                                             : dem::RollingModel::ConstantTorque;
+    // (A model with no rolling friction given resists nothing: none; viscous takes its coefficient.)
+    m.rollingModel = rolling != "viscous" && !anyRolling ? dem::RollingModel::None
+                                                         : listedModel(dem::kRollingModelList, rolling);
     t.finish();
     return m;
 }

@@ -14,8 +14,30 @@ using namespace veridem::dem;
 
 TEST(NormalModels, LinearIsSpringPlusDashpot)
 {
-    EXPECT_DOUBLE_EQ(linearNormalForce(1e5, 4.0, 1e-6, 0.0), 0.1);
-    EXPECT_DOUBLE_EQ(linearNormalForce(1e5, 4.0, 1e-6, 0.5), 0.1 + 2.0);
+    EXPECT_DOUBLE_EQ(linearElasticForce(1e5, 1e-6), 0.1);
+    // At rest the dashpot adds nothing; approaching at u_half the dashpot takes the end-of-step
+    // speed u = (m u_half + dt/2 F_el) / (m + dt/2 eta) (the force the law composes).
+    const double m = 2e-3, eta = 4.0, halfStep = 5e-6, uHalf = -0.5;
+    EXPECT_DOUBLE_EQ(springDashpotNormalForce(0.1, eta, 0.0, m, halfStep),
+                     0.1 - eta * ((m * 0.0 + halfStep * 0.1) / (m + halfStep * eta)));
+    const double u = (m * uHalf + halfStep * 0.1) / (m + halfStep * eta);
+    EXPECT_DOUBLE_EQ(springDashpotNormalForce(0.1, eta, uHalf, m, halfStep), 0.1 - eta * u);
+    // The law runs these functions: a linear contact's Fn is exactly their composition.
+    PairParams p;
+    p.normalModel = NormalModel::Linear;
+    p.rollingModel = RollingModel::None;
+    p.kn = 1e5;
+    p.dampingRate = eta / m; // etaN = gamma_n m*
+    ContactInput in;
+    in.normal = {0, 0, 1};
+    in.overlap = 1e-4; // (> |u| dt: no transition weighting of the dashpot)
+    in.relativeVelocity = {0, 0, uHalf};
+    in.effectiveMass = m;
+    ContactHistory history;
+    const ContactOutput out = evaluateContact(p, in, history, 2 * halfStep);
+    const double etaN = p.dampingRate * m;
+    EXPECT_EQ(out.normalForce,
+              springDashpotNormalForce(linearElasticForce(1e5, 1e-4), etaN, uHalf, m, halfStep));
 }
 
 TEST(NormalModels, DampingRatioGivesRestitution)

@@ -29,39 +29,28 @@ using namespace lanes; // Lanes2, Lanes4, kWidth, load, store, broadcast (dem/la
 
 inline constexpr std::size_t kBatch = 64; // contacts per batch (a multiple of every width); ~20 KB, in L1
 
+/// One parameter of LawParams in every lane of a batch [the parameter's unit].
+using LaneColumn = std::array<double, kBatch>;
+
 /// Pair parameters per lane of a batch (filled only if there is more than one material pair):
-/// LawParams, one array per field.
+/// LawParams' lane twin, one column per field, bound to LawParams by forEachLawParam.
 struct LaneParams
 {
-    alignas(64) double kn[kBatch], ktRatio[kBatch], modulus[kBatch], shearModulus[kBatch], rate[kBatch],
-        factor[kBatch], etaRatio[kBatch], mu[kBatch], rollingLength[kBatch], rollingDimless[kBatch],
-        rollingDamping[kBatch], rollingTwist[kBatch], rollingViscous[kBatch], adhesion[kBatch];
+    alignas(64) LawParamsOf<LaneColumn> column;
 
-    /// The fields, in LawParams' order.
-    std::array<double*, 14> fields()
-    {
-        return {kn, ktRatio,       modulus,        shearModulus,   rate,         factor,         etaRatio,
-                mu, rollingLength, rollingDimless, rollingDamping, rollingTwist, rollingViscous, adhesion};
-    }
     void set(std::size_t m, const LawParams& p)
     {
-        const std::array<double, 14> values{p.kn,
-                                            p.ktRatio,
-                                            p.modulus,
-                                            p.shearModulus,
-                                            p.dampingRate,
-                                            p.dampingFactor,
-                                            p.etaRatio,
-                                            p.mu,
-                                            p.rollingLength,
-                                            p.rollingDimless,
-                                            p.rollingDamping,
-                                            p.rollingTwist,
-                                            p.rollingViscous,
-                                            p.adhesion};
-        const std::array<double*, 14> f = fields();
-        for (std::size_t k = 0; k < f.size(); ++k)
-            f[k][m] = values[k];
+        forEachLawParam(column, p, [m](LaneColumn& c, Real v) VERIDEM_INLINE_LAMBDA { c[m] = v; });
+    }
+    /// Lanes [count, padded) repeat lane count - 1 (padding).
+    void pad(std::size_t count, std::size_t padded)
+    {
+        forEachLawParam(column, column,
+                        [&](LaneColumn& c, const LaneColumn&)
+                        {
+                            for (std::size_t m = count; m < padded; ++m)
+                                c[m] = c[count - 1];
+                        });
     }
 };
 
@@ -71,39 +60,14 @@ template <class Lanes>
 VERIDEM_HOT_INLINE LawParamsOf<Lanes> laneLawParams(const LawParams* uniform, const LaneParams& law,
                                                     std::size_t m)
 {
+    LawParamsOf<Lanes> p{};
     if (uniform)
-    {
-        const auto b = [](Real v) VERIDEM_INLINE_LAMBDA { return broadcast<Lanes>(v); };
-        return {b(uniform->kn),
-                b(uniform->ktRatio),
-                b(uniform->modulus),
-                b(uniform->shearModulus),
-                b(uniform->dampingRate),
-                b(uniform->dampingFactor),
-                b(uniform->etaRatio),
-                b(uniform->mu),
-                b(uniform->rollingLength),
-                b(uniform->rollingDimless),
-                b(uniform->rollingDamping),
-                b(uniform->rollingTwist),
-                b(uniform->rollingViscous),
-                b(uniform->adhesion)};
-    }
-    const auto l = [&](const double* a) VERIDEM_INLINE_LAMBDA { return load<Lanes>(a + m); };
-    return {l(law.kn),
-            l(law.ktRatio),
-            l(law.modulus),
-            l(law.shearModulus),
-            l(law.rate),
-            l(law.factor),
-            l(law.etaRatio),
-            l(law.mu),
-            l(law.rollingLength),
-            l(law.rollingDimless),
-            l(law.rollingDamping),
-            l(law.rollingTwist),
-            l(law.rollingViscous),
-            l(law.adhesion)};
+        forEachLawParam(p, *uniform, [](Lanes& v, Real u) VERIDEM_INLINE_LAMBDA { v = broadcast<Lanes>(u); });
+    else
+        forEachLawParam(p, law.column,
+                        [m](Lanes& v, const LaneColumn& c) VERIDEM_INLINE_LAMBDA
+                        { v = load<Lanes>(c.data() + m); });
+    return p;
 }
 
 /// The law of a world with a single material pair: its parameters and model bit (no table look-up
@@ -298,10 +262,9 @@ VERIDEM_HOT_INLINE void lawLanes(LawBatch& b, std::size_t count, Real dt, const 
         for (double* a : b.inputs())
             a[m] = a[count - 1];
         b.model[m] = b.model[count - 1];
-        if (!uniform)
-            for (double* a : b.law.fields())
-                a[m] = a[count - 1];
     }
+    if (!uniform)
+        b.law.pad(count, padded);
     if ((b.models & (b.models - 1)) == 0) // one model: every lane takes its results
         forEachLawModel(
             b.models, [&](auto model, unsigned index) VERIDEM_INLINE_LAMBDA

@@ -42,11 +42,23 @@ inline Real dampingRatioFromRestitution(Real e)
     return -logE / std::sqrt(kPi * kPi + logE * logE);
 }
 
-/// Linear spring-dashpot normal force [N] (positive = repulsive).
-/// kn [N/m], etaN [N s/m], overlap delta [m], overlapRate deltaDot [m/s] (> 0 approaching).
-template <class T> VERIDEM_HOT_INLINE T linearNormalForce(T kn, T etaN, T overlap, T overlapRate)
+/// Linear spring force [N]: kn delta. kn [N/m], overlap delta [m].
+template <class T> VERIDEM_HOT_INLINE T linearElasticForce(T kn, T overlap)
 {
-    return kn * overlap + etaN * overlapRate;
+    return kn * overlap;
+}
+
+/// Spring-dashpot normal force [N] (> 0 repulsive) at the end of the step, as the contact law
+/// composes every model's: the elastic force [N] minus the dashpot eta [N s/m] times the normal
+/// speed at t+dt, u = (m* u_half + dt/2 elastic) / (m* + dt/2 eta), the solution of the pair's own
+/// final half kick (dem/contact_law.h). normalSpeed u_half [m/s] (< 0 approaching), effective mass
+/// m* [kg], halfStep dt/2 [s].
+template <class T>
+VERIDEM_HOT_INLINE T springDashpotNormalForce(T elastic, T eta, T normalSpeed, T effectiveMass, Real halfStep)
+{
+    const T normalSpeedEnd =
+        (effectiveMass * normalSpeed + halfStep * elastic) / (effectiveMass + halfStep * eta);
+    return elastic - eta * normalSpeedEnd;
 }
 
 /// Hertz elastic normal force [N]: (4/3) E* sqrt(R*) delta^{3/2}. E* [Pa], R* [m], delta [m].

@@ -76,6 +76,13 @@ template <class T> struct RollingSpringResultOf
 };
 using RollingSpringResult = RollingSpringResultOf<Real>;
 
+/// The EPSD rolling stiffness kr = 2.25 kn muR^2 [N m/rad] of a contact of normal stiffness kn
+/// [N/m] and rolling friction length muR [m] (the one source: the law and the stable time step).
+template <class T> VERIDEM_HOT_INLINE T epsdRollingStiffness(T kn, T muR)
+{
+    return 2.25 * kn * muR * muR;
+}
+
 /// Type C (EPSD) torque. kr [N m/rad], cr [N m s/rad], muR [m], Fn [N], spring Mk [N m].
 template <class T>
 VERIDEM_HOT_INLINE RollingSpringResultOf<T>
