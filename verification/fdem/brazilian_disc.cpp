@@ -32,6 +32,9 @@ struct DiscRun
     std::size_t triangles = 0; // of the disc
     std::size_t joints = 0;    // inserted
     Real peak = 0;             // peak platen force P [N/m]
+    Real initiation = 0;       // platen force when the first joint reaches f_t (damage > 0) [N/m]
+    Real initiationTime = 0;   // [s]
+    Vec2 initiationAt{};       // midpoint of that joint (reference) [m]
     Real peakTime = 0;         // [s]
     Real asymmetry = 0;        // |P_left - P_right| / P at the peak
     std::size_t broken = 0;    // at the end
