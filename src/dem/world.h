@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/bonds/bond_set.h"
 #include "dem/contact_history.h"
 #include "dem/exec/block_partition.h"
 #include "dem/materials.h"
@@ -195,6 +196,8 @@ struct World
     // refreshFixedParticles(). Empty: the step runs exactly as it would without the feature.
     std::vector<std::uint32_t> fixedIndex;
     std::vector<Vec3> fixedHome;
+    // Bonded particles (dem/bonds/bond_set.h): not `enabled` (the default), the step runs none of it.
+    BondSet bonds;
     Vec3 gravity{0, 0, -9.81}; // [m/s^2]
     Real time = 0;             // [s]
     std::uint64_t stepCount = 0;
