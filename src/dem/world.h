@@ -196,8 +196,6 @@ struct World
     // refreshFixedParticles(). Empty: the step runs exactly as it would without the feature.
     std::vector<std::uint32_t> fixedIndex;
     std::vector<Vec3> fixedHome;
-    // Bonded particles (dem/bonds/bond_set.h): not `enabled` (the default), the step runs none of it.
-    BondSet bonds;
     Vec3 gravity{0, 0, -9.81}; // [m/s^2]
     Real time = 0;             // [s]
     std::uint64_t stepCount = 0;
@@ -206,6 +204,8 @@ struct World
     bool prepared = false;
     StepObserver* observer = nullptr; // not owned; null: none
     RankExchange* ranks = nullptr;    // not owned; null: one process holds every particle
+    // Bonded particles (dem/bonds/bond_set.h): not `enabled` (the default), the step runs none of it.
+    BondSet bonds;
 
     /// Adds a material; returns its id.
     std::uint32_t addMaterial(const Material& m);
