@@ -171,7 +171,9 @@ TEST(BondWorld, BadKeysAreRefusedWithTheirName)
     EXPECT_NE(unstable.find("kn"), std::string::npos) << unstable;
     EXPECT_NE(unstable.find("unstable"), std::string::npos) << unstable;
     for (const std::string& e : {none, unstable})
+    {
         EXPECT_EQ(e.find('\n'), std::string::npos) << e; // one line
+    }
 }
 
 } // namespace

@@ -54,7 +54,8 @@ void applyBonds(BondSet& set, ParticleStore& p, Real time, Real dt)
     {
         if (time + dt < set.createAt)
             return;
-        createBonds(set, p);
+        createBonds(set, p); // at x(t + dt): unloaded now, the increments start with the next step
+        return;
     }
     bool mapped = false;
     std::size_t kept = 0;

@@ -60,8 +60,8 @@ struct BondSet
 std::size_t createBonds(BondSet& set, const ParticleStore& particles);
 
 /// The step's bond pass (see the file comment): forms the bonds if due (t_end = time + dt >=
-/// createAt), then advances each intact bond over dt [s], adding its loads to the partners' force
-/// and torque sums; broken and dropped bonds leave the list.
+/// createAt; unloaded at that step), else advances each intact bond over dt [s], adding its loads
+/// to the partners' force and torque sums; broken and dropped bonds leave the list.
 void applyBonds(BondSet& set, ParticleStore& particles, Real time, Real dt);
 
 } // namespace veridem::dem
