@@ -106,7 +106,8 @@ struct Simulation::State
         const std::filesystem::path& dir = options.outDir;
         recorder.emplace(dir, scene.output, resume ? &*resume : nullptr);
         thermo.emplace(dir, scene.output, thermoBytes,
-                       measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr);
+                       measure.energy ? (severalRanks ? &ledgerTotals : &ledger) : nullptr,
+                       scene.world.bonds.enabled);
         if (measure.contacts)
             contacts.emplace(dir, scene.output, resume ? resume->frameTimes : std::vector<double>{});
         if (measure.region)

@@ -106,6 +106,20 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                     "rebuilds\n",
                     wall, exec::threads(), wall > 0 ? sim.particleSteps() / wall : 0.0,
                     world.neighbors.rebuildCount());
+    if (world.bonds.enabled) // (dem/bonds/bond_set.h)
+    {
+        const dem::BondSet& b = world.bonds;
+        std::printf("veridem: bonds: %llu formed, %llu broken, %llu dropped with a removed particle, %zu "
+                    "intact\n",
+                    static_cast<unsigned long long>(b.formed), static_cast<unsigned long long>(b.broken),
+                    static_cast<unsigned long long>(b.dropped), b.bonds.size());
+        if (b.overstretched > 0)
+            std::printf("veridem: warning: %llu intact bonds are stretched beyond %.0f %% of their rest "
+                        "length (largest strain %.3g) without breaking: their partners drifted apart (no "
+                        "tensile_strength, or one too high for the load)\n",
+                        static_cast<unsigned long long>(b.overstretched), 100 * dem::BondSet::kOverstretch,
+                        b.maxStrain);
+    }
     return 0;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/bonds/bond_set.h"
 #include "dem/contact_history.h"
 #include "dem/exec/block_partition.h"
 #include "dem/materials.h"
@@ -203,6 +204,8 @@ struct World
     bool prepared = false;
     StepObserver* observer = nullptr; // not owned; null: none
     RankExchange* ranks = nullptr;    // not owned; null: one process holds every particle
+    // Bonded particles (dem/bonds/bond_set.h): not `enabled` (the default), the step runs none of it.
+    BondSet bonds;
 
     /// Adds a material; returns its id.
     std::uint32_t addMaterial(const Material& m);

@@ -1,5 +1,7 @@
 #include "io/dem_checkpoint.h"
 
+#include "io/bond_checkpoint.h"
+
 #include <string>
 
 namespace veridem::dem
@@ -353,6 +355,8 @@ void writeDemCheckpoint(const std::filesystem::path& path, const dem::World& wor
     dem::CheckpointAccess::write(out, world.neighbors, world.pairHistory);
     writePeriodicPairs(out, world.periodicPairs);
     dem::CheckpointAccess::write(out, world.wallContacts, world.wallHistory);
+    if (world.bonds.enabled)
+        writeBondRecords(out, world.bonds);
     out.value("enLg", std::uint8_t(ledger != nullptr));
     if (ledger)
         out.array("enSt", ledgerValues(*ledger));
@@ -453,6 +457,8 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
     readPeriodicPairs(in, world.periodicPairs, world.pairHistory.keepRolling, n);
     dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, world.walls);
     world.wallContacts.markActivity(world.walls); // (not saved: the walls' clocks give it)
+    if (world.bonds.enabled)
+        readBondRecords(in, world.bonds);
     const bool hasLedger = in.value<std::uint8_t>("enLg") != 0;
     if (hasLedger != (ledger != nullptr))
         in.fail(hasLedger ? "keeps an energy ledger, the scene does not"

@@ -5,6 +5,7 @@
 #include "dem/models/normal.h"
 #include "dem/spatial_sort.h"
 #include "dem/walls/wall.h"
+#include "io/bond_keys.h"
 #include "io/domain_keys.h"
 #include "io/particle_file.h"
 #include "io/particle_flow_keys.h"
@@ -428,6 +429,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
     const std::optional<TableReader> domain = readDomain(top, world, scene.measurements);
     scene.flow =
         readParticleFlow(top, world, std::max<std::uint64_t>(1, std::llround(flowInterval / scene.dt)));
+    readBonds(top, world, scene.dt, !scene.flow.inserters.empty(), scene.measurements.energy); // [bonds]
     top.finish();
 
     if (world.particles.size() == 0 && scene.flow.inserters.empty())

@@ -5,7 +5,7 @@ namespace veridem::io
 
 namespace
 {
-std::vector<std::string> columns(bool ledger)
+std::vector<std::string> columns(bool ledger, bool bonds)
 {
     std::vector<std::string> c = {"t",
                                   "particles",
@@ -19,13 +19,18 @@ std::vector<std::string> columns(bool ledger)
                                  "dissipated_tangential_damping", "dissipated_friction", "dissipated_rolling",
                                  "dissipated_adhesion", "energy_initial", "energy_residual"})
             c.push_back(name);
+    if (bonds)
+        for (const char* name : {"bonds_intact", "bonds_broken"})
+            c.push_back(name);
     return c;
 }
 } // namespace
 
 ThermoRecorder::ThermoRecorder(const std::filesystem::path& directory, const OutputOptions& options,
-                               std::optional<std::uint64_t> resumeBytes, const dem::EnergyLedger* ledger)
-    : dt_(options.dt), ledger_(ledger), table_(directory, columns(ledger != nullptr), resumeBytes)
+                               std::optional<std::uint64_t> resumeBytes, const dem::EnergyLedger* ledger,
+                               bool bonds)
+    : dt_(options.dt), ledger_(ledger), bonds_(bonds),
+      table_(directory, columns(ledger != nullptr, bonds), resumeBytes)
 {
 }
 
@@ -51,6 +56,11 @@ void ThermoRecorder::record(const dem::World& world, const std::vector<dem::Cont
         for (const Real v : {s.gravityWork, s.wallWork, s.normalDamping, s.tangentialDamping, s.friction,
                              s.rolling, s.adhesion, s.initialEnergy, ledger_->residual(world)})
             row.emplace_back(v);
+    }
+    if (bonds_)
+    {
+        row.emplace_back(std::uint64_t(world.bonds.bonds.size()));
+        row.emplace_back(std::uint64_t(world.bonds.broken));
     }
     table_.row(row);
 }

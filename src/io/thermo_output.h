@@ -5,7 +5,9 @@
 // energy ledger (dem/energy_ledger.h, `[output] energy = true`), also its terms [J]: the work of
 // gravity and of the walls, the energy dissipated by normal damping, tangential damping, friction
 // and rolling resistance, the initial energy and the balance residual
-// E_kin + E_elastic - W_gravity - W_walls + D - E_initial. Every write is checked (OutputError).
+// E_kin + E_elastic - W_gravity - W_walls + D - E_initial. With bonds (`[bonds]`,
+// dem/bonds/bond_set.h), also the intact bonds and the bonds broken so far. Every write is checked
+// (OutputError).
 #pragma once
 
 #include "dem/contact_diagnostics.h"
@@ -24,10 +26,11 @@ class ThermoRecorder
 {
   public:
     /// With `resumeBytes` (a restart), continues an existing thermo.csv cut to that size. `ledger`
-    /// (not owned; null: none) adds its columns. Times: outputTime(step count, options.dt).
+    /// (not owned; null: none) adds its columns, `bonds` the bond counts. Times: outputTime(step
+    /// count, options.dt).
     ThermoRecorder(const std::filesystem::path& directory, const OutputOptions& options,
                    std::optional<std::uint64_t> resumeBytes = std::nullopt,
-                   const dem::EnergyLedger* ledger = nullptr);
+                   const dem::EnergyLedger* ledger = nullptr, bool bonds = false);
     /// One row; `contacts`: the world's contacts now (evaluateContacts(world, 0)), for the elastic
     /// energy (their stored energy) when there is no ledger (the ledger keeps that of its last
     /// step, the same).
@@ -38,6 +41,7 @@ class ThermoRecorder
   private:
     Real dt_; // [s]
     const dem::EnergyLedger* ledger_;
+    bool bonds_;
     ThermoTable table_;
 };
 
