@@ -13,8 +13,9 @@ Files read (all optional; a missing one leaves its part out and says so):
   <date>-<machine>-dem8-impact25k-ball.csv     veridem: t,id,x,y,z,vx,vy,vz of the ball every 0.5 ms
   <date>-<machine>-dem8-impact-liggghts.csv    LIGGGHTS: t,z (bench/dem8/peers/run_impact.sh)
   <date>-<machine>-dem8-impact-yade.csv        Yade: t,z
-  <date>-<machine>-dem8-speed.csv              the speed table: case,code,setup,cores,particles,steps,
-                                               wall_s,particle_steps_per_s,date,machine
+  <date>-<machine>-dem8-speed.csv              the speed table: case,pair,code,setup,cores,particles,
+                                               steps,wall_s,particle_steps_per_s,date,machine (the rows
+                                               of one pair were timed in turn in the same minutes)
 """
 
 import csv
@@ -165,12 +166,12 @@ def speed_table(w, root, results_dir):
     path, _, _ = found
     with open(path) as stream:
         rows = list(csv.DictReader(stream))
-    reference = {(r["case"], r["cores"]): float(r["particle_steps_per_s"]) for r in rows if r["code"] == "LIGGGHTS"}
+    reference = {(r["case"], r["pair"]): float(r["particle_steps_per_s"]) for r in rows if r["code"] == "LIGGGHTS"}
     w("<table class='summary'><tr><th>case</th><th>code</th><th>set-up</th><th>cores</th><th>particles x steps</th>"
-      "<th>wall (s)</th><th>particle-steps/s</th><th>per core, / LIGGGHTS on as many cores</th><th>made</th></tr>")
+      "<th>wall (s)</th><th>particle-steps/s</th><th>/ LIGGGHTS on as many cores, same run</th><th>made</th></tr>")
     for r in rows:
         rate = float(r["particle_steps_per_s"])
-        ref = reference.get((r["case"], r["cores"]))
+        ref = reference.get((r["case"], r["pair"]))
         ratio = f"{rate / ref:.2f}x" if ref and r["code"] != "LIGGGHTS" else "–"
         w(f"<tr><td>{html.escape(r['case'])}</td><td>{html.escape(r['code'])}</td><td class='why'>"
           f"{html.escape(r['setup'])}</td><td class='num'>{r['cores']}</td><td class='num'>{int(r['particles']):,} x "
