@@ -3,6 +3,7 @@
 family of cases (cases, passed, worst error over tolerance) linking to one section per family with
 its figures and its detailed table folded (<details>). Helpers: report_util.py (series, saving),
 report_families.py (FAMILIES, which sorts the cases, and the benchmark families' figures), report_bulk.py (the bulk checks' figures),
+report_dem8.py (the cross-code benchmark DEM8, from bench/results/),
 report_html.py (the page).
 
 Usage: report.py DIR RESULTS_JSON
@@ -45,6 +46,7 @@ from report_families import (CHUNG_OOI_PANELS, FAMILIES, chung_ooi_force_figure,
                              chung_ooi_restitution_figure, chung_ooi_sweep_figure, convergence_figure,
                              dt_sweep_figure, family_of, rolling_frames_figure)
 from report_bulk import bulk_figures  # noqa: E402
+from report_dem8 import dem8_section  # noqa: E402
 from report_html import write_html  # noqa: E402
 from report_util import column, read_series, save  # noqa: E402
 
@@ -460,7 +462,9 @@ def main():
             if path:
                 figures.append((family_of(case), section, f"{case}: {name}", path))
 
-    write_html(out_dir, cases, figures)
+    # The cross-code benchmark, from the latest results files (report_dem8.py).
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    write_html(out_dir, cases, figures, dem8_section(out_dir, root))
     print(f"report: {os.path.join(out_dir, 'index.html')} ({len(figures)} figures)")
     return 0
 

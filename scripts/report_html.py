@@ -66,7 +66,8 @@ def case_table(w, cases):
     w("</table>")
 
 
-def write_html(out_dir, cases, figures):
+def write_html(out_dir, cases, figures, dem8=""):
+    """dem8: the cross-code benchmark section's HTML (report_dem8.py), after the families, or ''."""
     passed = sum(1 for c in cases if c.get("passed"))
     total_seconds = sum(c.get("seconds", 0) for c in cases)
     by_family = {key: [c for c in cases if family_of(c["name"]) == key] for key, _, _, _ in FAMILIES}
@@ -111,7 +112,11 @@ def write_html(out_dir, cases, figures):
         w(f"<tr><td><a href='#{key}'>{html.escape(title)}</a></td><td class='num'>{len(members)}</td>"
           f"<td class='num {cls}'>{ok}</td><td class='num'>{fmt(worst)}</td><td class='why'>{html.escape(where)}</td>"
           f"{order_cell}</tr>")
-    w("</table><p class='why'>error / tolerance: the largest share of its tolerance any check of the family uses "
+    w("</table>")
+    if dem8:
+        w("<p><a href='#dem8'>Cross-code benchmark (DEM8)</a>: the long runs beside the peers, from the latest "
+          "results files (not rerun by the suite).</p>")
+    w("<p class='why'>error / tolerance: the largest share of its tolerance any check of the family uses "
       "(above 1 fails). One-sided checks (a sign, or a miss that must exceed a bound) are written as windows "
       "and use much of their tolerance by construction. Failing cases are listed in their family's section. dt orders: "
       "the collision, friction and rolling cases run at dt, dt/2 and dt/4; their observed orders are drawn in the "
@@ -153,6 +158,8 @@ def write_html(out_dir, cases, figures):
             w(f"<p class='notes'><b>{html.escape(c['name'])}</b></p><ul class='notes'>" +
               "".join(f"<li>{html.escape(n)}</li>" for n in notes) + "</ul>")
         w("</details>")
+    if dem8:
+        w(dem8)
     w("</body></html>")
     with open(os.path.join(out_dir, "index.html"), "w") as f:
         f.write("\n".join(out))

@@ -46,6 +46,48 @@ void foldHealth(StepHealth& health, const ContactHealth* chunk, int chunks, std:
     }
 }
 
+/// Per-batch laws of a world with several materials (up to kMaxBatchLawMaterials): entry
+/// a * materials + b is the law of the ordered material pair (a, b), the same lawParams of the same
+/// PairParams that the kernel's per-lane look-up would set, so a batch given one of them computes
+/// the same bits, broadcast instead of looked up and loaded lane by lane.
+constexpr std::uint32_t kMaxBatchLawMaterials = 4;
+struct BatchLaws
+{
+    std::uint32_t materials = 0; // 0: no per-batch laws (one material, or more than the maximum)
+    UniformLaw law[kMaxBatchLawMaterials * kMaxBatchLawMaterials];
+};
+
+BatchLaws batchLaws(const World& world, const UniformLaw* uniform)
+{
+    BatchLaws laws;
+    const std::uint32_t count = world.pairs.count();
+    if (uniform || count > kMaxBatchLawMaterials)
+        return laws;
+    laws.materials = count;
+    for (std::uint32_t a = 0; a < count; ++a)
+        for (std::uint32_t b = 0; b < count; ++b)
+        {
+            const PairParams& pp = world.pairs(a, b);
+            laws.law[a * count + b] = UniformLaw{lawParams(pp), 1u << lawModelIndex(pp)};
+        }
+    return laws;
+}
+
+/// The law of batch `b`'s contacts [0, count) if they all join the same ordered material pair (a
+/// bed of one material struck by a ball of another, DEM8's impact: nearly every batch), else
+/// `uniform` (the world's single law, or null: each lane's pair looked up by the kernel).
+const UniformLaw* lawOfBatch(const BatchLaws& laws, const UniformLaw* uniform, const std::uint32_t* material,
+                             const PairBatch& b, std::size_t count)
+{
+    if (laws.materials == 0)
+        return uniform;
+    const std::uint32_t mi = material[b.i[0]], mj = material[b.j[0]];
+    for (std::size_t m = 1; m < count; ++m)
+        if (material[b.i[m]] != mi || material[b.j[m]] != mj)
+            return nullptr;
+    return &laws.law[mi * laws.materials + mj];
+}
+
 /// Zeroes the pair sums of particles [begin, end); returns end. Out of line: it runs once a block.
 [[gnu::noinline]] std::size_t zeroSums(const PairSink& sink, bool alreadyZero, std::size_t begin,
                                        std::size_t end)
@@ -69,6 +111,8 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     const bool allBatchable = world.exec.batchedContactKernel;
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
+    const BatchLaws perBatch = batchLaws(world, uniform);
+    const std::uint32_t* const material = p.material.data();
 
     constexpr std::size_t B = NeighborList::kBlockParticles;
     const std::size_t blocks = (n + B - 1) / B;
@@ -154,7 +198,8 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
             if (m == kBatch || a == end)
             {
                 if (m > 0)
-                    kernel(world, sink, dt, m, worst, batch, uniform);
+                    kernel(world, sink, dt, m, worst, batch,
+                           lawOfBatch(perBatch, uniform, material, batch, m));
                 touchingCount += m;
                 m = 0;
             }

@@ -1,0 +1,214 @@
+"""The report's "Cross-code benchmark (DEM8)" section (scripts/report.py): Dosta et al., Comput.
+Phys. Commun. 296 (2024) 109066, run in veridem and in its peers on this machine (bench/dem8/).
+
+These runs are long (bench/dem8/README.md): they are not part of the verification suite. The
+section draws from the latest results files in bench/results/ (the newest date in the file name
+wins), or, for veridem's curve, from a fresh run's out/dem8/impact_25k/tracked.csv when that is
+newer (`ctest --preset release -L '^dem8$'` or bench/dem8/run.sh impact_25k writes it). Every entry
+states the date and the machine it was made on: the date and machine tag of the file name
+(YYYY-MM-DD-<machine>-dem8-...), and the machine's description from the line starting with
+"# machine:" (any case) in a results log of the same date and tag, if one has it.
+
+Files read (all optional; a missing one leaves its part out and says so):
+  <date>-<machine>-dem8-impact25k-ball.csv     veridem: t,id,x,y,z,vx,vy,vz of the ball every 0.5 ms
+  <date>-<machine>-dem8-impact-liggghts.csv    LIGGGHTS: t,z (bench/dem8/peers/run_impact.sh)
+  <date>-<machine>-dem8-impact-yade.csv        Yade: t,z
+  <date>-<machine>-dem8-speed.csv              the speed table: case,pair,code,setup,cores,particles,
+                                               steps,wall_s,particle_steps_per_s,date,machine (the rows
+                                               of one pair were timed in turn in the same minutes)
+"""
+
+import csv
+import datetime
+import html
+import os
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from report_util import save  # noqa: E402
+
+BALL_RADIUS = 0.01  # m (the organisers' projectile)
+FLOOR_Z = -0.0902431  # m, the box's floor (../shared/dem8/impact/walls.txt)
+CODES = (("veridem", "impact25k-ball", "C0", "-"), ("LIGGGHTS", "impact-liggghts", "C1", "--"),
+         ("Yade", "impact-yade", "C2", ":"))
+NAME = re.compile(r"^(\d{4}-\d{2}-\d{2})-(.+)-dem8-(.+)\.(csv|txt)$")
+
+
+def latest(results_dir, kind):
+    """The newest results file of this kind (the part after 'dem8-'), as (path, date, machine)."""
+    found = []
+    for file in os.listdir(results_dir) if os.path.isdir(results_dir) else []:
+        m = NAME.match(file)
+        if m and m.group(3) == kind and m.group(4) == "csv":
+            found.append((m.group(1), file, m.group(2)))
+    if not found:
+        return None
+    date, file, machine = max(found)
+    return os.path.join(results_dir, file), date, machine
+
+
+def machine_line(results_dir, date, machine):
+    """The '# machine:' line of a dem8 results log of this date and machine tag, or ''."""
+    for file in sorted(os.listdir(results_dir)):
+        if file.startswith(f"{date}-{machine}-dem8") and file.endswith(".txt"):
+            with open(os.path.join(results_dir, file)) as stream:
+                for line in stream:
+                    if line.lower().startswith("# machine:"):
+                        return line.split(":", 1)[1].strip()
+    return ""
+
+
+def read_curve(path):
+    """(t [s], z [m]) lists of a ball curve: t,z or t,id,x,y,z,... columns."""
+    t, z = [], []
+    with open(path) as stream:
+        for row in csv.DictReader(stream):
+            t.append(float(row["t"]))
+            z.append(float(row["z"]))
+    return t, z
+
+
+def bed_top(shared_dir):
+    """The 25k bed's top, max(z + r) of its beads [m] (convert_impact.py's bed_top), or None."""
+    path = os.path.join(shared_dir, "impact", "particles_25k.txt")
+    if not os.path.isfile(path):
+        return None
+    top = None
+    with open(path) as stream:
+        for no, line in enumerate(stream):
+            fields = line.split()
+            if no == 0 or len(fields) != 4:  # header; the projectile row has six columns
+                continue
+            r, z = float(fields[0]), float(fields[3])
+            top = z + r if top is None else max(top, z + r)
+    return top
+
+
+def curves(root, results_dir):
+    """code -> (t, z, date, machine, source) for the impact on the 25k bed."""
+    out = {}
+    for code, kind, _, _ in CODES:
+        found = latest(results_dir, kind)
+        if found:
+            path, date, machine = found
+            t, z = read_curve(path)
+            out[code] = (t, z, date, machine, os.path.relpath(path, root))
+    fresh = os.path.join(root, "out", "dem8", "impact_25k", "tracked.csv")
+    if os.path.isfile(fresh):
+        made = datetime.datetime.fromtimestamp(os.path.getmtime(fresh), datetime.timezone.utc).date().isoformat()
+        if "veridem" not in out or made > out["veridem"][2]:
+            t, z = read_curve(fresh)
+            out["veridem"] = (t, z, made, f"this machine ({os.uname().nodename}, {os.cpu_count()} CPUs)",
+                              os.path.relpath(fresh, root))
+    return out
+
+
+def impact_figure(out_dir, data, top):
+    """The ball's centre height against time, whole run and around the deepest point, each code."""
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for code, _, colour, style in CODES:
+        if code not in data:
+            continue
+        t, z = data[code][:2]
+        for ax in axes:
+            ax.plot([v * 1e3 for v in t], z, style, color=colour, label=code, lw=1.6)
+    for ax in axes:
+        if top is not None:
+            ax.axhline(top + BALL_RADIUS, color="0.5", lw=0.8, ls="-.", label="ball touches the bed top")
+        ax.axhline(FLOOR_Z + BALL_RADIUS, color="k", lw=0.8, label="ball touches the floor")
+        ax.set_xlabel("t (ms)")
+        ax.set_ylabel("ball centre z (m)")
+        ax.grid(alpha=0.3)
+    axes[0].set_title("Impact on the 25k bed: the ball's height")
+    axes[1].set_xlim(19, 36)
+    axes[1].set_ylim(FLOOR_Z + BALL_RADIUS - 0.004, -0.035)
+    axes[1].set_title("around the deepest point")
+    axes[0].legend(fontsize=8)
+    return save(fig, out_dir, "dem8_impact25k_height")
+
+
+def deepest(t, z):
+    k = min(range(len(z)), key=z.__getitem__)
+    return z[k], t[k]
+
+
+def impact_table(w, data, top):
+    rows = {code: deepest(*data[code][:2]) for code in data}
+    peers = [rows[c] for c in ("LIGGGHTS", "Yade") if c in rows]
+    w("<table class='summary'><tr><th>code</th><th>deepest centre z (m)</th><th>at t (ms)</th>"
+      "<th>penetration below the bed top (mm)</th><th>inside the peers' band</th><th>made</th><th>file</th></tr>")
+    for code, _, _, _ in CODES:
+        if code not in rows:
+            continue
+        z, t = rows[code]
+        depth = f"{(top - (z - BALL_RADIUS)) * 1e3:.2f}" if top is not None else "–"
+        band = "–"
+        if code == "veridem" and len(peers) == 2:
+            lo, hi = min(p[0] for p in peers), max(p[0] for p in peers)
+            outside = f"{(z - hi) * 1e3:.3f} mm above" if z > hi else f"{(lo - z) * 1e3:.3f} mm below"
+            band = f"{'yes' if lo <= z <= hi else 'no, ' + outside}: the peers span {lo:.6f} to {hi:.6f} m"
+        _, _, date, machine, source = data[code]
+        w(f"<tr><td>{code}</td><td class='num'>{z:.6f}</td><td class='num'>{t * 1e3:.1f}</td>"
+          f"<td class='num'>{depth}</td><td class='why'>{html.escape(band)}</td>"
+          f"<td class='why'>{date}, {html.escape(machine)}</td><td class='why'>{html.escape(source)}</td></tr>")
+    w("</table>")
+
+
+def speed_table(w, root, results_dir):
+    found = latest(results_dir, "speed")
+    if not found:
+        w("<p class='why'>No speed results (bench/results/*-dem8-speed.csv).</p>")
+        return
+    path, _, _ = found
+    with open(path) as stream:
+        rows = list(csv.DictReader(stream))
+    reference = {(r["case"], r["pair"]): float(r["particle_steps_per_s"]) for r in rows if r["code"] == "LIGGGHTS"}
+    w("<table class='summary'><tr><th>case</th><th>code</th><th>set-up</th><th>cores</th><th>particles x steps</th>"
+      "<th>wall (s)</th><th>particle-steps/s</th><th>/ LIGGGHTS on as many cores, same run</th><th>made</th></tr>")
+    for r in rows:
+        rate = float(r["particle_steps_per_s"])
+        ref = reference.get((r["case"], r["pair"]))
+        ratio = f"{rate / ref:.2f}x" if ref and r["code"] != "LIGGGHTS" else "–"
+        w(f"<tr><td>{html.escape(r['case'])}</td><td>{html.escape(r['code'])}</td><td class='why'>"
+          f"{html.escape(r['setup'])}</td><td class='num'>{r['cores']}</td><td class='num'>{int(r['particles']):,} x "
+          f"{int(r['steps']):,}</td><td class='num'>{float(r['wall_s']):.2f}</td><td class='num'>{rate:.3g}</td>"
+          f"<td class='num'>{ratio}</td><td class='why'>{html.escape(r['date'])}, {html.escape(r['machine'])}</td></tr>")
+    w(f"</table><p class='why'>From {html.escape(os.path.relpath(path, root))}: whole-process wall times, the "
+      "median of runs alternating with the peer's in the same minutes (docs/performance.md, DEM8). The goal "
+      "(issue 47): 3x LIGGGHTS per core or more.</p>")
+
+
+def dem8_section(out_dir, root):
+    """The section's HTML (its figures written under out_dir/figures), or '' with no results at all."""
+    results_dir = os.path.join(root, "bench", "results")
+    shared = os.environ.get("VERIDEM_SHARED_DEM8_DIR", os.path.join(os.path.dirname(root), "shared", "dem8"))
+    data = curves(root, results_dir)
+    if not data and not latest(results_dir, "speed"):
+        return ""
+    top = bed_top(shared)
+    out = []
+    w = out.append
+    w("<h2 id='dem8'>Cross-code benchmark (DEM8)</h2>")
+    w("<p>The bulk processes of Dosta et al., <i>Comparing open-source DEM frameworks for simulations of common "
+      "bulk processes</i>, Comput. Phys. Commun. 296 (2024) 109066, as veridem scenes (bench/dem8/) and as the "
+      "peers' decks (bench/dem8/peers/), from the organisers' input. The runs are long and outside the "
+      "verification suite (<code>ctest -L '^dem8$'</code>); this section draws from the latest results files "
+      "in bench/results/, each with the date and machine it was made on. <a class='top' href='#summary'>"
+      "(back to the summary)</a></p>")
+    w("<h3>Impact on the 25k bed: the steel ball (r = 10 mm, 5 m/s) into the M1 beads</h3>")
+    if data:
+        path = impact_figure(out_dir, data, top)
+        if path:
+            w(f"<figure><a href='{path}'><img class='wide' src='{path}' alt='DEM8 impact'></a><figcaption>"
+              "The ball's centre height every 0.5 ms. The peers start on the ball's free-flight parabola at "
+              "t = 20 ms, 1 mm above the bed (bench/dem8/peers/README.md); veridem from t = 0.</figcaption></figure>")
+        impact_table(w, data, top)
+    else:
+        w("<p class='why'>No impact curves in bench/results/.</p>")
+    w("<h3>Speed</h3>")
+    speed_table(w, root, results_dir)
+    return "\n".join(out)
