@@ -1,5 +1,7 @@
 #include "dist/mpi_collective.h"
 
+#include "dist/mpi_wait.h"
+
 #include <climits>
 
 #include <stdexcept>
@@ -26,18 +28,24 @@ MpiCollective::MpiCollective(MPI_Comm comm) : comm_(comm)
 
 void MpiCollective::sum(std::span<std::uint64_t> values) const
 {
-    if (!values.empty())
-        check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UINT64_T,
-                            MPI_SUM, comm_),
-              "MPI_Allreduce (sum)");
+    if (values.empty())
+        return;
+    MPI_Request request;
+    check(MPI_Iallreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UINT64_T, MPI_SUM,
+                         comm_, &request),
+          "MPI_Iallreduce (sum)");
+    waitForRequests({&request, 1}, "MPI_Iallreduce (sum)");
 }
 
 void MpiCollective::max(std::span<double> values) const
 {
-    if (!values.empty())
-        check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
-                            comm_),
-              "MPI_Allreduce (max)");
+    if (values.empty())
+        return;
+    MPI_Request request;
+    check(MPI_Iallreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
+                         comm_, &request),
+          "MPI_Iallreduce (max)");
+    waitForRequests({&request, 1}, "MPI_Iallreduce (max)");
 }
 
 Buffers MpiCollective::exchange(Buffers outgoing) const
@@ -48,8 +56,11 @@ Buffers MpiCollective::exchange(Buffers outgoing) const
     std::vector<std::uint64_t> sendCount(size_), receiveCount(size_);
     for (int b = 0; b < size_; ++b)
         sendCount[b] = outgoing[b].size();
-    check(MPI_Alltoall(sendCount.data(), 1, MPI_UINT64_T, receiveCount.data(), 1, MPI_UINT64_T, comm_),
-          "MPI_Alltoall (exchange counts)");
+    MPI_Request request;
+    check(MPI_Ialltoall(sendCount.data(), 1, MPI_UINT64_T, receiveCount.data(), 1, MPI_UINT64_T, comm_,
+                        &request),
+          "MPI_Ialltoall (exchange counts)");
+    waitForRequests({&request, 1}, "MPI_Ialltoall (exchange counts)");
     const std::vector<std::size_t> incomingBytes(receiveCount.begin(), receiveCount.end());
     return exchangeSized(std::move(outgoing), incomingBytes);
 }
@@ -90,7 +101,7 @@ Buffers MpiCollective::exchangeSized(Buffers outgoing, std::span<const std::size
                         &requests.back()),
               "MPI_Isend (exchange)");
     }
-    check(MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall (exchange)");
+    waitForRequests(requests, "MPI_Testall (exchange)");
     incoming[rank_] = std::move(outgoing[rank_]);
     return incoming;
 }

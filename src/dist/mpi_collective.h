@@ -1,4 +1,6 @@
-// The collective operations of dist/collective.h over MPI (built when CMake finds MPI).
+// The collective operations of dist/collective.h over MPI (built when CMake finds MPI). Every wait
+// is a non-blocking call completed by dist/mpi_wait.h (spin, then yield the core, then sleep), so
+// that a waiting rank does not hold a core the awaited rank needs.
 #pragma once
 
 #include "dist/collective.h"
@@ -15,7 +17,7 @@ class MpiCollective final : public Collective
     explicit MpiCollective(MPI_Comm comm = MPI_COMM_WORLD);
     void sum(std::span<std::uint64_t> values) const override;
     void max(std::span<double> values) const override;
-    /// exchange: the counts by MPI_Alltoall, then exchangeSized: one message per non-empty
+    /// sum, max: MPI_Iallreduce. exchange: the counts by MPI_Ialltoall, then exchangeSized: one message per non-empty
     /// buffer (MPI_Isend/Irecv).
     Buffers exchange(Buffers outgoing) const override;
     Buffers exchangeSized(Buffers outgoing, std::span<const std::size_t> incomingBytes) const override;
