@@ -54,7 +54,8 @@ load() { cut -d' ' -f1 /proc/loadavg; }
 hog=""
 stop_hog() { if [ -n "$hog" ]; then kill "$hog" 2> /dev/null; wait "$hog" 2> /dev/null; hog=""; fi; }
 cleanup() { stop_hog; rm -rf "$work"; }
-trap cleanup EXIT INT TERM
+trap cleanup EXIT
+trap 'cleanup; exit 130' INT TERM
 
 echo "date $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, bed $bedSteps steps a run (particle-steps/s)," \
   "pour $pourSteps steps a run (1/s of the whole run)"

@@ -24,7 +24,10 @@ MpiCollective::MpiCollective(MPI_Comm comm) : comm_(comm)
 {
     check(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
     check(MPI_Comm_size(comm_, &size_), "MPI_Comm_size");
+    bell_ = std::make_unique<NodeBell>(comm_);
 }
+
+MpiCollective::~MpiCollective() = default;
 
 void MpiCollective::sum(std::span<std::uint64_t> values) const
 {
@@ -34,7 +37,7 @@ void MpiCollective::sum(std::span<std::uint64_t> values) const
     check(MPI_Iallreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_UINT64_T, MPI_SUM,
                          comm_, &request),
           "MPI_Iallreduce (sum)");
-    waitForRequests({&request, 1}, "MPI_Iallreduce (sum)");
+    waitForRequests({&request, 1}, *bell_, "MPI_Iallreduce (sum)");
 }
 
 void MpiCollective::max(std::span<double> values) const
@@ -45,7 +48,7 @@ void MpiCollective::max(std::span<double> values) const
     check(MPI_Iallreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
                          comm_, &request),
           "MPI_Iallreduce (max)");
-    waitForRequests({&request, 1}, "MPI_Iallreduce (max)");
+    waitForRequests({&request, 1}, *bell_, "MPI_Iallreduce (max)");
 }
 
 Buffers MpiCollective::exchange(Buffers outgoing) const
@@ -60,7 +63,7 @@ Buffers MpiCollective::exchange(Buffers outgoing) const
     check(MPI_Ialltoall(sendCount.data(), 1, MPI_UINT64_T, receiveCount.data(), 1, MPI_UINT64_T, comm_,
                         &request),
           "MPI_Ialltoall (exchange counts)");
-    waitForRequests({&request, 1}, "MPI_Ialltoall (exchange counts)");
+    waitForRequests({&request, 1}, *bell_, "MPI_Ialltoall (exchange counts)");
     const std::vector<std::size_t> incomingBytes(receiveCount.begin(), receiveCount.end());
     return exchangeSized(std::move(outgoing), incomingBytes);
 }
@@ -101,7 +104,7 @@ Buffers MpiCollective::exchangeSized(Buffers outgoing, std::span<const std::size
                         &requests.back()),
               "MPI_Isend (exchange)");
     }
-    waitForRequests(requests, "MPI_Testall (exchange)");
+    waitForRequests(requests, *bell_, "MPI_Testall (exchange)");
     incoming[rank_] = std::move(outgoing[rank_]);
     return incoming;
 }
