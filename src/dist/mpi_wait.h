@@ -6,7 +6,7 @@
 // OpenMPI's blocking calls (MPI_Wait*, MPI_Allreduce, ...) poll in a loop that never gives the core
 // up. On a machine with more runnable processes than cores, a rank waiting for a preempted partner
 // then spins its time slice away at every exchange (docs/performance.md, "Ranks on a shared
-// machine": 2 ranks ran a pour 4 to 9 times slower than one process). The policy
+// machine": 2 ranks ran the 20k bed 3 times slower than one process). The policy
 // (waitForRequests):
 //   - first, the rank rings its node's bell (it has posted its sends or its part of a collective:
 //     a sleeping peer should test now);
@@ -22,9 +22,10 @@
 //   - once done, it rings again (its messages are through: a peer may wait for their completion).
 // The timeout bounds what a missed event costs (ranks on other nodes ring no bell, and a rank whose
 // send needs its partner's progress sleeps at most that long). A yielding stage (sched_yield
-// between tests for 2 ms before sleeping) was measured first: it keeps the rank runnable, and
-// under load the waiting rank then waited out other processes' time slices (2 ranks at 0.2-0.3x one
-// process against 0.4-0.8x with the bell, bench/results/2026-12-07-cpp-2core-ranks-under-load.txt).
+// between tests for 2 ms before sleeping, no bell) was measured first: it keeps the rank runnable,
+// and under load the waiting rank then waited out other processes' time slices: 2 ranks at 0.32x
+// one process on the 20k bed beside a CPU-bound process, against 1.18-1.28x with the bell
+// (bench/results/2026-12-07-cpp-2core-ranks-under-load.txt).
 // A signal (SIGINT, SIGTERM) ends a sleep early; the wait goes on until the requests are complete,
 // and the run stops at its next check of io::stopSignal() (between pieces of advance(), agreed by
 // all ranks at the same step), as in one process. The policy is the program's: no variable is read.
