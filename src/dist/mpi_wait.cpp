@@ -21,24 +21,42 @@ static_assert(std::atomic<std::uint32_t>::is_always_lock_free && sizeof(std::ato
 
 NodeBell::NodeBell(MPI_Comm comm)
 {
+    int size = 1;
+    MPI_Comm_size(comm, &size);
+    nodeRankOf_.assign(std::size_t(size), -1);
     if (MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node_) != MPI_SUCCESS)
         return;
-    int nodeRank = 0, nodeSize = 1;
-    MPI_Comm_rank(node_, &nodeRank);
+    int nodeSize = 1;
+    MPI_Comm_rank(node_, &nodeRank_);
     MPI_Comm_size(node_, &nodeSize);
+    const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    oversubscribed_ = cores > 0 && nodeSize > cores;
     if (nodeSize < 2)
         return;
+    MPI_Group group = MPI_GROUP_NULL, nodeGroup = MPI_GROUP_NULL;
+    MPI_Comm_group(comm, &group);
+    MPI_Comm_group(node_, &nodeGroup);
+    std::vector<int> ranks(std::size_t(size), 0);
+    for (int r = 0; r < size; ++r)
+        ranks[std::size_t(r)] = r;
+    MPI_Group_translate_ranks(group, size, ranks.data(), nodeGroup, nodeRankOf_.data());
+    MPI_Group_free(&group);
+    MPI_Group_free(&nodeGroup);
+    for (int& r : nodeRankOf_)
+        if (r == MPI_UNDEFINED)
+            r = -1;
     void* base = nullptr;
-    const MPI_Aint bytes = nodeRank == 0 ? MPI_Aint(sizeof(Shared)) : 0;
+    const MPI_Aint bytes = nodeRank_ == 0 ? MPI_Aint(nodeSize) * MPI_Aint(sizeof(Slot)) : 0;
     if (MPI_Win_allocate_shared(bytes, 1, MPI_INFO_NULL, node_, &base, &window_) != MPI_SUCCESS)
         return;
-    MPI_Aint size = 0;
+    MPI_Aint got = 0;
     int unit = 0;
-    MPI_Win_shared_query(window_, 0, &size, &unit, &base);
-    if (nodeRank == 0)
-        new (base) Shared{};
+    MPI_Win_shared_query(window_, 0, &got, &unit, &base);
+    if (nodeRank_ == 0)
+        for (int r = 0; r < nodeSize; ++r)
+            new (static_cast<Slot*>(base) + r) Slot{};
     MPI_Barrier(node_); // (the words exist before any rank rings)
-    shared_ = static_cast<Shared*>(base);
+    slots_ = static_cast<Slot*>(base);
 }
 
 NodeBell::~NodeBell()
@@ -49,37 +67,40 @@ NodeBell::~NodeBell()
         MPI_Comm_free(&node_);
 }
 
-void NodeBell::ring() const
+void NodeBell::ring(int rank) const
 {
-    if (!shared_)
+    if (!slots_ || rank < 0 || std::size_t(rank) >= nodeRankOf_.size() || nodeRankOf_[std::size_t(rank)] < 0)
         return;
-    shared_->rings.fetch_add(1, std::memory_order_seq_cst);
-    if (shared_->sleepers.load(std::memory_order_seq_cst) != 0)
-        syscall(SYS_futex, &shared_->rings, FUTEX_WAKE, INT32_MAX, nullptr, nullptr, 0);
+    Slot& s = slots_[nodeRankOf_[std::size_t(rank)]];
+    s.rings.fetch_add(1, std::memory_order_seq_cst);
+    if (s.sleeping.load(std::memory_order_seq_cst) != 0)
+        syscall(SYS_futex, &s.rings, FUTEX_WAKE, 1, nullptr, nullptr, 0);
 }
 
 std::uint32_t NodeBell::rings() const
 {
-    return shared_ ? shared_->rings.load(std::memory_order_seq_cst) : 0;
+    return slots_ ? slots_[nodeRank_].rings.load(std::memory_order_seq_cst) : 0;
 }
 
 void NodeBell::sleep(std::uint32_t seen, std::int64_t ns) const
 {
-    if (!shared_)
+    if (!slots_)
     {
         std::this_thread::sleep_for(std::chrono::nanoseconds(ns));
         return;
     }
-    // The ringer adds to `rings`, then loads `sleepers`; the sleeper adds to `sleepers`, then the
+    // The ringer adds to `rings`, then loads `sleeping`; the sleeper stores `sleeping`, then the
     // kernel compares `rings` with `seen` (all sequentially consistent): one of the two sees the
     // other's write, so no ring is lost.
-    shared_->sleepers.fetch_add(1, std::memory_order_seq_cst);
+    Slot& s = slots_[nodeRank_];
+    s.sleeping.store(1, std::memory_order_seq_cst);
     const timespec timeout{time_t(ns / 1'000'000'000), long(ns % 1'000'000'000)};
-    syscall(SYS_futex, &shared_->rings, FUTEX_WAIT, seen, &timeout, nullptr, 0);
-    shared_->sleepers.fetch_sub(1, std::memory_order_seq_cst);
+    syscall(SYS_futex, &s.rings, FUTEX_WAIT, seen, &timeout, nullptr, 0);
+    s.sleeping.store(0, std::memory_order_seq_cst);
 }
 
-void waitForRequests(std::span<MPI_Request> requests, const NodeBell& bell, const char* what)
+void waitForRequests(std::span<MPI_Request> requests, std::span<const int> partners, const NodeBell& bell,
+                     const char* what)
 {
     const auto test = [&]
     {
@@ -90,7 +111,22 @@ void waitForRequests(std::span<MPI_Request> requests, const NodeBell& bell, cons
                                      std::to_string(code) + ")");
         return done != 0;
     };
-    bell.ring();
+    const auto ringPartners = [&]
+    {
+        for (const int r : partners)
+            bell.ring(r);
+    };
+    if (bell.oversubscribed())
+    {
+        // (more ranks than cores: MPI's own wait, which OpenMPI makes yield the core between tests
+        // when it starts more ranks than cores, mpi_yield_when_idle)
+        const int code = MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+        if (code != MPI_SUCCESS)
+            throw std::runtime_error(std::string("MPI: ") + what + " failed (error code " +
+                                     std::to_string(code) + ")");
+        return;
+    }
+    ringPartners();
     std::int64_t sleep = kFirstSleepNanoseconds;
     for (;;)
     {
@@ -100,7 +136,7 @@ void waitForRequests(std::span<MPI_Request> requests, const NodeBell& bell, cons
         {
             if (test())
             {
-                bell.ring();
+                ringPartners();
                 return;
             }
             exec::relax();
@@ -108,7 +144,7 @@ void waitForRequests(std::span<MPI_Request> requests, const NodeBell& bell, cons
         const std::uint32_t seen = bell.rings();
         if (test())
         {
-            bell.ring();
+            ringPartners();
             return;
         }
         bell.sleep(seen, sleep);
