@@ -39,8 +39,8 @@
 #include "dem/paper_balls.h" // verification/: the paper's turntable ball
 #include "dem/spatial_sort.h"
 #include "dem/world.h"
-#include "dist/rank_gather.h"
-#include "dist/rank_step.h"
+#include "distributed/rank_gather.h"
+#include "distributed/rank_step.h"
 #include "exec/isa.h"
 #include "exec/thread_pool.h"
 #include "io/surface_mesh_reader.h"
@@ -406,11 +406,11 @@ namespace
 /// Under `mpirun -np R` (R > 1): the run's figures from all ranks, printed by the first. Wall time
 /// is the slowest rank's; memory is every rank's peak RSS summed (ghosts and MPI buffers
 /// included) over the particles; communication is each rank's time in the exchanges.
-void reportRanks(const Options& o, const World& world, const dist::RankStep& ranks, std::size_t n,
+void reportRanks(const Options& o, const World& world, const distributed::RankStep& ranks, std::size_t n,
                  double seconds, double cpu, double residentBefore)
 {
-    const dist::Collective& comm = ranks.comm();
-    const dist::RankStep::Times& t = ranks.times();
+    const distributed::Collective& comm = ranks.comm();
+    const distributed::RankStep::Times& t = ranks.times();
     std::vector<double> largest = {seconds, t.refresh, t.decision, t.health, t.exchange};
     comm.max(largest);
     std::vector<std::uint64_t> sums = {static_cast<std::uint64_t>(peakResidentBytes()),
@@ -422,7 +422,7 @@ void reportRanks(const Options& o, const World& world, const dist::RankStep& ran
     comm.sum(sums);
     std::vector<double> ownedMaxD = {double(ranks.owned()), double(ranks.halo().ghosts())};
     comm.max(ownedMaxD);
-    const std::optional<World> whole = dist::gatherWorld(world, ranks);
+    const std::optional<World> whole = distributed::gatherWorld(world, ranks);
     if (comm.rank() != 0)
         return;
     const int r = comm.size();
@@ -482,7 +482,7 @@ int run(int argc, char** argv)
         const auto setupStart = std::chrono::steady_clock::now();
         if (o.sort)
             sortParticlesSpatially(world);
-        std::optional<dist::RankStep> ranks;
+        std::optional<distributed::RankStep> ranks;
         if (launch.size() > 1) // each rank prepares its part
         {
             ranks.emplace(*launch.collective());

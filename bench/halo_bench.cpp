@@ -1,7 +1,7 @@
 // What a distributed step exchanges (docs/performance.md, "Communication"): a dense bed of N
 // spheres (r 0.9-1.1 mm on a cubic lattice of pitch 2.2 mm with a jitter of 0.1 mm, in a cube,
-// or 50 x 50 a layer with --flat), cut by recursive bisection (dist/bisection.h, weight 1) and
-// exchanged as dist/halo.h does, with halo = r_max + skin, skin 0.2 mm (the bed's).
+// or 50 x 50 a layer with --flat), cut by recursive bisection (distributed/bisection.h, weight 1) and
+// exchanged as distributed/halo.h does, with halo = r_max + skin, skin 0.2 mm (the bed's).
 //
 //   mpirun -np P veridem_halo_bench [--particles N] [--steps S] [--flat]
 //     each rank holds every P-th sphere, decomposes, exchanges (migration and ghosts, timed) and
@@ -12,9 +12,9 @@
 //     one process, no exchange: the decomposition into P parts and, per part, the ghosts it
 //     would receive and its neighbour parts (the model's inputs for any P).
 #include "bench_args.h"
-#include "dist/exchange_plan.h"
-#include "dist/halo.h"
-#include "dist/mpi_collective.h"
+#include "distributed/exchange_plan.h"
+#include "distributed/halo.h"
+#include "distributed/mpi_collective.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,7 +66,8 @@ int partsMode(std::size_t n, int parts, bool flat)
     for (std::size_t i = 0; i < n; ++i)
         addSphere(p, i, bed.side, bed.layer);
     const std::vector<std::uint32_t> weight(n, 1);
-    const dist::Decomposition d = dist::bisect(p.position, weight, parts, dist::SerialCollective{});
+    const distributed::Decomposition d =
+        distributed::bisect(p.position, weight, parts, distributed::SerialCollective{});
     std::vector<std::size_t> owned(parts, 0), ghosts(parts, 0);
     std::vector<std::set<int>> neighbours(parts);
     for (std::size_t i = 0; i < n; ++i)
@@ -102,7 +103,7 @@ int partsMode(std::size_t n, int parts, bool flat)
 
 int mpiMode(std::size_t n, int steps, bool flat)
 {
-    const dist::MpiCollective comm;
+    const distributed::MpiCollective comm;
     const int me = comm.rank(), ranks = comm.size();
     const Bed bed = bedShape(n, flat);
     dem::ParticleStore p;
@@ -112,19 +113,19 @@ int mpiMode(std::size_t n, int steps, bool flat)
     const std::vector<std::uint32_t> weight(p.size(), 1);
     MPI_Barrier(MPI_COMM_WORLD);
     double t0 = MPI_Wtime();
-    const dist::Decomposition d = dist::bisect(p.position, weight, ranks, comm);
+    const distributed::Decomposition d = distributed::bisect(p.position, weight, ranks, comm);
     const double cut = MPI_Wtime() - t0;
     MPI_Barrier(MPI_COMM_WORLD);
     t0 = MPI_Wtime();
-    const dist::Halo h = dist::exchangeParticles(p, p.size(), d, kHalo, comm);
+    const distributed::Halo h = distributed::exchangeParticles(p, p.size(), d, kHalo, comm);
     const double exchange = MPI_Wtime() - t0;
     std::vector<double> times;
     for (int s = 0; s < steps + 10; ++s)
     {
         MPI_Barrier(MPI_COMM_WORLD);
         t0 = MPI_Wtime();
-        dist::refreshGhosts(p, h, comm);
-        dist::returnGhostForces(p, h, comm);
+        distributed::refreshGhosts(p, h, comm);
+        distributed::returnGhostForces(p, h, comm);
         if (s >= 10) // (the first 10: warm-up)
             times.push_back(MPI_Wtime() - t0);
     }
@@ -133,8 +134,8 @@ int mpiMode(std::size_t n, int steps, bool flat)
     std::size_t sentGhosts = 0;
     for (const auto& s : h.sent)
         sentGhosts += s.size();
-    const double stepBytes =
-        double(sentGhosts) * double(dist::kMotionBytes) + double(h.ghosts()) * dist::kForceBytes;
+    const double stepBytes = double(sentGhosts) * double(distributed::kMotionBytes) +
+                             double(h.ghosts()) * distributed::kForceBytes;
     double mine[4] = {double(h.ghosts()) / double(h.owned), stepBytes, median, double(h.neighbours())};
     std::printf(
         "rank %d of %d: %zu owned, %zu ghosts (%.4f of owned) from %d neighbour(s); decomposition %.3f s, "

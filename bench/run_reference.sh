@@ -38,7 +38,7 @@ trap 'rm -rf "$work"' EXIT
 python3 "$here/lammps/xyz_to_data.py" "$shared/settled_bed_20k.xyz" "$work/bed.data" 0.05
 python3 "$here/lammps/xyz_to_data.py" "$shared/random_gas_20k.xyz" "$work/gas.data" 0.32
 
-# veridem on MPI ranks (dist/rank_step.h): the same bench, distributed, one thread a rank.
+# veridem on MPI ranks (distributed/rank_step.h): the same bench, distributed, one thread a rank.
 mpi_bench() { # ranks, bench arguments...
   n=$1; shift
   mpirun --allow-run-as-root --oversubscribe --mca btl_vader_single_copy_mechanism none -np "$n" "$bench" "$@" --threads 1

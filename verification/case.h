@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace veridem::dist
+namespace veridem::distributed
 {
 class Collective;
 }
@@ -61,7 +61,7 @@ struct CaseContext
     double dtScale = 1;        // every time step of the case is multiplied by this (dt sweeps)
     /// Under `mpirun -np N veridem verify` (N > 1): the ranks, over which the cases labelled
     /// "ranks" step their worlds (dem/case_stepper.h); null in one process.
-    const dist::Collective* ranks = nullptr;
+    const distributed::Collective* ranks = nullptr;
     /// The runner's task sharing (exec/task_sharing.h) when cases run side by side; null otherwise.
     exec::TaskSharing* tasks = nullptr;
 

@@ -1,7 +1,7 @@
 #include "runner.h"
 
 #include "core/error.h"
-#include "dist/collective.h"
+#include "distributed/collective.h"
 #include "exec/task_sharing.h"
 #include "exec/thread_pool.h"
 #include "sweep.h"

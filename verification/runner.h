@@ -23,7 +23,7 @@ struct RunRequest
     /// run (a case named with `--case` that is not one is refused), one at a time on the calling
     /// thread (the collectives of every rank in one order), their worlds stepped over the ranks
     /// (dem/case_stepper.h); every rank computes the results, the caller prints them on one.
-    const dist::Collective* ranks = nullptr;
+    const distributed::Collective* ranks = nullptr;
 };
 
 /// Prints the case list (name, labels, summary).

@@ -1,7 +1,7 @@
 // api::Simulation: a DEM scene read (or restored), stepped with its outputs, checkpoints and
 // particle flow at their times. On several MPI ranks each rank steps its region's particles
-// (dist/rank_step.h) and the first writes the files from the whole world gathered
-// (dist/rank_gather.h). Reading and changing the state between steps: simulation_access.cpp.
+// (distributed/rank_step.h) and the first writes the files from the whole world gathered
+// (distributed/rank_gather.h). Reading and changing the state between steps: simulation_access.cpp.
 #include "api/simulation.h"
 
 #include "api/rolling_note.h"
@@ -98,16 +98,16 @@ Simulation Simulation::fromTable(const toml::table& table, const std::string& na
         if (!flow.empty())
             flow.apply(world, scene.dt); // (step 0 is a flow step)
     }
-    // Several ranks: each keeps its region's particles and their ghosts (dist/rank_step.h).
+    // Several ranks: each keeps its region's particles and their ghosts (distributed/rank_step.h).
     if (s->severalRanks)
     {
         s->rankStep.emplace(*options.ranks, options.rebalanceEvery);
         s->rankStep->distribute(world);
         if (!saved && !flow.empty())
-            dist::applyFlow(flow, world, *s->rankStep, scene.dt); // (step 0 is a flow step)
+            distributed::applyFlow(flow, world, *s->rankStep, scene.dt); // (step 0 is a flow step)
         if (saved) // (the checkpoint's totals are counted once, by the first rank)
         {
-            dist::countOnFirstRank(flow.outlets, *options.ranks);
+            distributed::countOnFirstRank(flow.outlets, *options.ranks);
             if (!s->root)
                 dem::forEachAmount(s->ledger.state, [](Real& a) { a = 0; });
         }

@@ -13,7 +13,7 @@
 #include "dem/contact_diagnostics.h"
 #include "dem/energy_ledger.h"
 #include "dem/world.h"
-#include "dist/collective.h"
+#include "distributed/collective.h"
 
 #include <toml++/toml.h>
 
@@ -30,14 +30,14 @@ namespace veridem::api
 
 struct SimulationOptions
 {
-    std::filesystem::path outDir;            // where the scene's files go (created if missing);
-                                             // empty: no files are written (checkpoints still can be)
-    bool speak = true;                       // start-up notes and warnings on stderr
-    bool allowUnstableTimeStep = false;      // run above the stability limit (warned), else refused
-    bool strict = false;                     // the plausibility warnings (io/plausibility.h) are errors
-    std::string restartFile;                 // continue from this checkpoint (empty: start afresh)
-    const dist::Collective* ranks = nullptr; // the MPI job's ranks (mpirun); null: one process
-    std::uint64_t rebalanceEvery = 10;       // exchanges of particles between cuts of the regions
+    std::filesystem::path outDir;       // where the scene's files go (created if missing);
+                                        // empty: no files are written (checkpoints still can be)
+    bool speak = true;                  // start-up notes and warnings on stderr
+    bool allowUnstableTimeStep = false; // run above the stability limit (warned), else refused
+    bool strict = false;                // the plausibility warnings (io/plausibility.h) are errors
+    std::string restartFile;            // continue from this checkpoint (empty: start afresh)
+    const distributed::Collective* ranks = nullptr; // the MPI job's ranks (mpirun); null: one process
+    std::uint64_t rebalanceEvery = 10;              // exchanges of particles between cuts of the regions
 };
 
 /// Why advance() returned before its last step.

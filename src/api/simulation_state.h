@@ -8,10 +8,10 @@
 #include "core/error.h"
 #include "dem/forces.h"
 #include "dem/particle_changes.h"
-#include "dist/rank_flow.h"
-#include "dist/rank_gather.h"
-#include "dist/rank_step.h"
-#include "dist/rank_sums.h"
+#include "distributed/rank_flow.h"
+#include "distributed/rank_gather.h"
+#include "distributed/rank_step.h"
+#include "distributed/rank_sums.h"
 #include "io/contact_output.h"
 #include "io/dem_checkpoint.h"
 #include "io/dem_scene.h"
@@ -46,7 +46,7 @@ struct Simulation::State
     double particleSteps = 0;       // run by advance() on this rank
     dem::EnergyLedger ledger;       // with `[output] energy = true`: world.observer
     dem::EnergyLedger ledgerTotals; // on several ranks, the ranks' sum (the files read it)
-    std::optional<dist::RankStep> rankStep;
+    std::optional<distributed::RankStep> rankStep;
     // The files (the first rank only; none without an output directory)
     std::optional<io::ParticleRecorder> recorder;
     std::optional<io::ThermoRecorder> thermo;
@@ -127,13 +127,13 @@ struct Simulation::State
     /// The outlets' totals: this process's, or on several ranks their sum (on the first). Collective.
     std::vector<dem::Outlet> outletState()
     {
-        return rankStep ? dist::outletTotals(scene.flow.outlets, *options.ranks) : scene.flow.outlets;
+        return rankStep ? distributed::outletTotals(scene.flow.outlets, *options.ranks) : scene.flow.outlets;
     }
     /// The ledger's amounts summed over the ranks, on the first (collective).
     void sumLedger()
     {
         if (rankStep && scene.measurements.energy)
-            ledgerTotals.state = dist::ledgerTotals(ledger.state, *options.ranks);
+            ledgerTotals.state = distributed::ledgerTotals(ledger.state, *options.ranks);
     }
 
     void recordOutputs()
@@ -144,7 +144,7 @@ struct Simulation::State
             outlets || rankStep ? outletState() : scene.flow.outlets;
         sumLedger();
         std::optional<dem::World> gathered;
-        if (rankStep && !(gathered = dist::gatherWorld(world(), *rankStep)))
+        if (rankStep && !(gathered = distributed::gatherWorld(world(), *rankStep)))
             return; // (not the first rank)
         const dem::World& w = gathered ? *gathered : world();
         const std::vector<dem::ContactRecord> now = dem::evaluateContacts(w, 0.0);
@@ -180,7 +180,7 @@ struct Simulation::State
         saved.outlets = outletState();
         sumLedger();
         std::optional<dem::World> gathered;
-        if (rankStep && !(gathered = dist::gatherWorld(world(), *rankStep)))
+        if (rankStep && !(gathered = distributed::gatherWorld(world(), *rankStep)))
             return;
         io::CheckpointOutputs outputs;
         if (recorder)
@@ -232,7 +232,7 @@ struct Simulation::State
     void applyFlow()
     {
         if (rankStep)
-            dist::applyFlow(scene.flow, world(), *rankStep, scene.dt);
+            distributed::applyFlow(scene.flow, world(), *rankStep, scene.dt);
         else
             scene.flow.apply(world(), scene.dt);
     }

@@ -6,7 +6,7 @@
 #include <string>
 
 #if VERIDEM_HAVE_MPI
-#include "dist/mpi_collective.h"
+#include "distributed/mpi_collective.h"
 
 #include <mpi.h>
 #endif
@@ -38,7 +38,7 @@ MpiLaunch::MpiLaunch([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv)
     int provided = 0; // (MPI calls come from the main thread only; the thread pool never calls MPI)
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
     initialised_ = true;
-    collective_ = std::make_unique<dist::MpiCollective>(MPI_COMM_WORLD);
+    collective_ = std::make_unique<distributed::MpiCollective>(MPI_COMM_WORLD);
 #else
     if (size > 1)
         throw InputError("started as one of " + std::to_string(size) +

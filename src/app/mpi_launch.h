@@ -4,7 +4,7 @@
 // one process, as does a build without MPI (which refuses to be one of several processes).
 #pragma once
 
-#include "dist/collective.h"
+#include "distributed/collective.h"
 
 #include <memory>
 
@@ -20,7 +20,7 @@ class MpiLaunch
     MpiLaunch& operator=(const MpiLaunch&) = delete;
 
     /// The ranks of the job, or null when this process runs alone.
-    const dist::Collective* collective() const { return collective_.get(); }
+    const distributed::Collective* collective() const { return collective_.get(); }
     int rank() const { return collective_ ? collective_->rank() : 0; }
     int size() const { return collective_ ? collective_->size() : 1; }
     /// Ends every rank of the job with `code` (an error found on one rank only: the others would
@@ -28,7 +28,7 @@ class MpiLaunch
     [[noreturn]] void abort(int code) const;
 
   private:
-    std::unique_ptr<dist::Collective> collective_;
+    std::unique_ptr<distributed::Collective> collective_;
     bool initialised_ = false;
 };
 

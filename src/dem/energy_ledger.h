@@ -9,7 +9,7 @@
 // On MPI ranks each rank's ledger books its share (its own particles' gravity work and kinetic
 // energy, the contacts evaluateContacts gives it: each contact on one rank). Every amount is a sum
 // over particles or contacts, so the ranks' states add up to the whole run's (forEachAmount;
-// dist/rank_sums.h), however the particles move between ranks.
+// distributed/rank_sums.h), however the particles move between ranks.
 #pragma once
 
 #include "dem/contact_diagnostics.h"

@@ -133,7 +133,7 @@ class NeighborList
     void renameParticles(const std::vector<std::uint32_t>& newIndex, ContactHistoryStore& history);
     /// Replaces the candidates by `first`[a] < `second`[a], sorted by (i, j) and without repeats,
     /// with their history `history` (entry a for candidate a), for particles renumbered between
-    /// steps (renameParticles; an MPI rank's particles after an exchange, dist/rank_history.h). The
+    /// steps (renameParticles; an MPI rank's particles after an exchange, distributed/rank_history.h). The
     /// rebuild() that must follow carries the history by key.
     void adoptCandidates(std::vector<std::uint32_t> first, std::vector<std::uint32_t> second,
                          ContactHistoryStore& history, ContactHistoryStore&& adopted);

@@ -136,7 +136,7 @@ struct ParticleFlow
     /// compactRetiredParticles before reading the particles by slot.
     bool apply(World& world, Real dt);
 
-    // The parts of apply(), for a run on several MPI ranks (dist/rank_flow.h):
+    // The parts of apply(), for a run on several MPI ranks (distributed/rank_flow.h):
     /// The first `count` particles whose centre an outlet holds (frozen and retired ones
     /// excepted), counted into the outlets' totals; the caller retires or removes them.
     std::vector<std::uint32_t> takeAtOutlets(const World& world, std::size_t count);

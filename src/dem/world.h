@@ -120,7 +120,7 @@ struct PassSchedule
 
 struct World;
 
-/// A distributed run's part in the step (dist/rank_step.h): each MPI rank steps the particles it
+/// A distributed run's part in the step (distributed/rank_step.h): each MPI rank steps the particles it
 /// owns plus ghost copies of the others' near its region, and the step calls this at two points.
 /// The physics stays in the stages; this only moves particles and combines decisions.
 class RankExchange
@@ -232,7 +232,7 @@ void rebuildAfterParticleChange(World& world);
 
 /// Rebuilds the pair and wall contact lists at the current positions, the history carried by key:
 /// what a step does when some particle moved more than skin/2, and what follows an MPI exchange of
-/// particles (dist/rank_step.h).
+/// particles (distributed/rank_step.h).
 void rebuildContactLists(World& world);
 
 /// Advances the world by dt [s] with velocity Verlet (see world.cpp for the stages).

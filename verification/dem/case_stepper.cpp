@@ -1,9 +1,9 @@
 #include "case_stepper.h"
 
 #include "dem/particle_changes.h"
-#include "dist/rank_flow.h"
-#include "dist/rank_gather.h"
-#include "dist/rank_step.h"
+#include "distributed/rank_flow.h"
+#include "distributed/rank_gather.h"
+#include "distributed/rank_step.h"
 
 #include <utility>
 
@@ -19,10 +19,10 @@ CaseStepper::CaseStepper(dem::World& world, const CaseContext& context, dem::Par
             dem::prepare(world);
         return;
     }
-    ranks_ = std::make_unique<dist::RankStep>(*context.ranks);
+    ranks_ = std::make_unique<distributed::RankStep>(*context.ranks);
     ranks_->distribute(world);
     if (flow_) // (every rank holds the same totals: finish)
-        dist::countOnFirstRank(flow_->outlets, *context.ranks);
+        distributed::countOnFirstRank(flow_->outlets, *context.ranks);
 }
 
 CaseStepper::~CaseStepper() = default;
@@ -37,7 +37,7 @@ void CaseStepper::applyFlow(Real dt)
     if (!flow_ || flow_->empty())
         return;
     if (ranks_)
-        dist::applyFlow(*flow_, world_, *ranks_, dt);
+        distributed::applyFlow(*flow_, world_, *ranks_, dt);
     else
         flow_->apply(world_, dt);
 }
@@ -52,8 +52,8 @@ void CaseStepper::sample(const std::function<void(const dem::World&)>& sample)
     }
     std::vector<dem::Outlet> own;
     if (flow_)
-        own = std::exchange(flow_->outlets, dist::outletTotals(flow_->outlets, ranks_->comm(), true));
-    const dem::World whole = *dist::gatherWorld(world_, *ranks_, dist::kEveryRank);
+        own = std::exchange(flow_->outlets, distributed::outletTotals(flow_->outlets, ranks_->comm(), true));
+    const dem::World whole = *distributed::gatherWorld(world_, *ranks_, distributed::kEveryRank);
     sample(whole);
     if (flow_)
         flow_->outlets = std::move(own);
@@ -76,8 +76,8 @@ void CaseStepper::finish()
         return;
     }
     if (flow_)
-        flow_->outlets = dist::outletTotals(flow_->outlets, ranks_->comm(), true);
-    dem::World whole = *dist::gatherWorld(world_, *ranks_, dist::kEveryRank);
+        flow_->outlets = distributed::outletTotals(flow_->outlets, ranks_->comm(), true);
+    dem::World whole = *distributed::gatherWorld(world_, *ranks_, distributed::kEveryRank);
     whole.exec = world_.exec;
     whole.observer = world_.observer;
     world_ = std::move(whole);

@@ -1,13 +1,13 @@
 // The stepping of a case's world, in one process or, under `mpirun -np N veridem verify`, over
 // the MPI ranks (CaseContext::ranks): the same case code either way. On several ranks each rank
-// keeps its region's particles and their ghosts (dist::RankStep::distribute) while the world
-// steps, the scene's particle flow runs as in `veridem run` on ranks (dist::applyFlow), a sampler
+// keeps its region's particles and their ghosts (distributed::RankStep::distribute) while the world
+// steps, the scene's particle flow runs as in `veridem run` on ranks (distributed::applyFlow), a sampler
 // reads the whole world gathered on every rank (so every rank computes the same observables and
 // takes the same branches), and finish() leaves the whole world on every rank, which is what the
 // case reads after a run of steps. The cases whose stepping all goes through this (runFor,
 // runScene) carry the label "ranks".
 //
-// The whole world a sampler reads is dist::gatherWorld's: particles by id, history, lists and
+// The whole world a sampler reads is distributed::gatherWorld's: particles by id, history, lists and
 // wall loads as one process holds them, and each outlet's totals over the ranks. A sample costs a
 // gather of O(N) on every rank: the cases' worlds are small (<= ~3e4 spheres).
 #pragma once
@@ -21,7 +21,7 @@
 #include <limits>
 #include <memory>
 
-namespace veridem::dist
+namespace veridem::distributed
 {
 class RankStep;
 }
@@ -43,7 +43,7 @@ class CaseStepper
     /// several ranks, the health of all ranks). Returns the steps done.
     std::uint64_t advance(Real dt, std::uint64_t steps,
                           Real maxOverlapFraction = std::numeric_limits<Real>::infinity());
-    /// The flow's inserters and outlets at this step (ParticleFlow::apply, or dist::applyFlow).
+    /// The flow's inserters and outlets at this step (ParticleFlow::apply, or distributed::applyFlow).
     void applyFlow(Real dt);
     /// Calls sample(whole world): this one (retired particles compacted away first) or, on
     /// several ranks, the world gathered on every rank with the outlets' totals of all ranks.
@@ -57,7 +57,7 @@ class CaseStepper
   private:
     dem::World& world_;
     dem::ParticleFlow* flow_;
-    std::unique_ptr<dist::RankStep> ranks_; // null in one process
+    std::unique_ptr<distributed::RankStep> ranks_; // null in one process
 };
 
 } // namespace veridem::verify

@@ -1,0 +1,20 @@
+# tests/distributed/CMakeLists.txt: mpi_hopper_discharge_rate. -DVERIDEM, -DMPIEXEC, -DSCENE, -DCOMPARE, -DWORK.
+file(REMOVE_RECURSE ${WORK})
+foreach(ranks 1 2 4)
+  if(ranks EQUAL 1)
+    set(command ${VERIDEM})
+  else()
+    set(command ${MPIEXEC} -np ${ranks} ${VERIDEM})
+  endif()
+  execute_process(COMMAND ${command} run ${SCENE} --quiet --threads 1 --out ${WORK}/np${ranks}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${ranks} rank(s): exit ${rc}\n${out}\n${err}")
+  endif()
+endforeach()
+execute_process(COMMAND python3 ${COMPARE} ${WORK}/np1 ${WORK}/np2 ${WORK}/np4 RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out)
+message(STATUS "${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the discharge differs")
+endif()
