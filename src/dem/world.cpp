@@ -10,6 +10,8 @@
 //                  skin/2 (or a wall translated more than skin/2)
 //   pairs          pair contact forces at x(t+dt) from the half-step velocities, summed into
 //                  the particles block by block (parallel over fixed blocks of particles)
+//   bonds          only in a scene with [bonds]: each intact bond's force and torque into both
+//                  particles, one thread, in bond order (dem/bonds)
 //   particles      one pass per particle: its contacts with earlier blocks, then its wall
 //                  contacts (each in slot order: every sum has a fixed order, the same bits for
 //                  any number of threads, STYLE 3.4; neighbor_list.h), then the kick
