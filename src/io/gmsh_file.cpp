@@ -1,6 +1,7 @@
 #include "io/gmsh_file.h"
 
 #include "core/error.h"
+#include "io/number_text.h"
 
 #include <cmath>
 #include <fstream>
@@ -96,19 +97,10 @@ class Tokens
     Real real(const char* what)
     {
         const std::string t = word(what);
-        std::size_t used = 0;
-        double v = 0;
-        try
-        {
-            v = std::stod(t, &used);
-        }
-        catch (const std::exception&)
-        {
-            used = 0;
-        }
-        if (used != t.size() || !std::isfinite(v))
+        const std::optional<double> v = parseFiniteNumber(t);
+        if (!v)
             fail(std::string("expected ") + what + " (a finite number), got '" + t + "'");
-        return v;
+        return *v;
     }
 
     void expect(const std::string& keyword)

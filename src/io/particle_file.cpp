@@ -1,6 +1,7 @@
 #include "io/particle_file.h"
 
 #include "core/error.h"
+#include "io/number_text.h"
 #include "io/scene_limits.h"
 
 #include <algorithm>
@@ -87,17 +88,6 @@ std::vector<std::string_view> split(std::string_view line)
             fields.push_back(line.substr(start, k - start));
     }
     return fields;
-}
-
-std::optional<double> parseNumber(std::string_view text)
-{
-    if (!text.empty() && text[0] == '+')
-        text.remove_prefix(1);
-    double value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size())
-        return std::nullopt;
-    return value;
 }
 
 /// Where each column is in a line (-1: absent), from a header line.

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "io/gmsh_file.h"
+#include "io/number_text.h"
 
 #include <algorithm>
 #include <array>
@@ -63,19 +64,10 @@ class Lines
     }
     Real number(const std::string& word) const
     {
-        std::size_t used = 0;
-        Real v = 0;
-        try
-        {
-            v = std::stod(word, &used);
-        }
-        catch (const std::exception&)
-        {
-            used = 0;
-        }
-        if (used != word.size() || !std::isfinite(v))
+        const std::optional<double> v = parseFiniteNumber(word);
+        if (!v)
             fail("bad number '" + word + "' (expected a finite number)");
-        return v;
+        return *v;
     }
     std::int64_t integer(const std::string& word) const
     {
@@ -176,18 +168,7 @@ std::vector<Vec3> triangleText(const std::string& text, const std::string& path,
         throw InputError(path + ": empty triangle file (" + expected + " after a header line)");
     bool numeric = true;
     for (const std::string& word : w)
-    {
-        std::size_t used = 0;
-        try
-        {
-            std::stod(word, &used);
-        }
-        catch (const std::exception&)
-        {
-            used = 0;
-        }
-        numeric = numeric && used == word.size();
-    }
+        numeric = numeric && parseNumber(word).has_value();
     if (numeric)
         in.fail("expected a header line naming the nine columns before the triangles");
     std::vector<Vec3> corners;
