@@ -16,6 +16,7 @@
 #include "dem/models/rolling.h"
 #include "dem/models/tangential.h"
 
+#include <array>
 #include <iterator>
 #include <type_traits>
 #include <utility>
@@ -174,6 +175,9 @@ template <class T> struct ContactHistoryOf
     lanes::Vec3Of<T> tangentialSpring{}; // xi [m]
     lanes::Vec3Of<T> rollingSpring{};    // EPSD elastic torque [N m]
     T formed{}; // 1 while a JKR contact is formed, else 0 [-] (the law writes 1 for other models)
+    // The normal model's own history (ModelEntry::historyScalars of them; zero at first touch;
+    // units the model's): e.g. Thornton's largest overlap [m].
+    std::array<T, kHistoryScalarRoom> scalars{};
 };
 using ContactHistory = ContactHistoryOf<Real>;
 

@@ -121,6 +121,14 @@ void PairTable::build(const std::vector<Material>& materials)
             table_[a * count_ + b] = mixMaterials(materials[a], materials[b]);
 }
 
+unsigned PairTable::historyScalars() const
+{
+    unsigned most = 0;
+    for (const PairParams& p : table_)
+        most = std::max(most, historyScalarsOf(p.normalModel));
+    return most;
+}
+
 void PairTable::set(std::uint32_t a, std::uint32_t b, const PairParams& params)
 {
     table_.at(static_cast<std::size_t>(a) * count_ + b) = params;

@@ -28,11 +28,17 @@ enum class NormalModel
     Dmt     // Hertz-Mindlin elasticity with DMT adhesion (models/cohesion.h)
 };
 
-/// A registered model: its enumerator and its scene name (`model`, `rolling_model`).
+/// A registered model: its enumerator, its scene name (`model`, `rolling_model`) and the number of
+/// history scalars [-] a contact of the model carries from step to step (ContactHistory::scalars:
+/// the model's own state, e.g. a largest overlap; scalars are invariant under swapping the
+/// partners). The contact history stores keep that many doubles per contact, only in scenes that
+/// use such a model (dem/contact_history.h); every store, rebuild, checkpoint and MPI exchange
+/// carries them without naming the model.
 template <class Model> struct ModelEntry
 {
     Model model;
     const char* name;
+    unsigned historyScalars = 0;
 };
 /// Every normal model, in the enumerators' order: the scene reader names, and the law dispatches
 /// (withLawModel, forEachLawModel, dem/contact_law.h), exactly the models listed here.
@@ -80,6 +86,21 @@ constexpr bool listedInOrder(const ModelEntry<Model> (&list)[kCount])
     return true;
 }
 static_assert(listedInOrder(kNormalModelList) && listedInOrder(kRollingModelList));
+
+/// The history scalars [-] a contact of normal model m carries (its list entry's).
+constexpr unsigned historyScalarsOf(NormalModel m)
+{
+    return kNormalModelList[static_cast<std::size_t>(m)].historyScalars;
+}
+/// The room for history scalars in ContactHistory: the most any listed model declares (at least
+/// one, so that the array is never empty).
+inline constexpr unsigned kHistoryScalarRoom = []
+{
+    unsigned most = 1;
+    for (const auto& entry : kNormalModelList)
+        most = entry.historyScalars > most ? entry.historyScalars : most;
+    return most;
+}();
 
 /// A model value outside its list: never made by the scene reader, which names only listed models;
 /// the law's dispatch stops the run with this message rather than run another model's law.
@@ -158,6 +179,9 @@ class PairTable
     /// Replaces the parameters of the ordered pair (a, b).
     void set(std::uint32_t a, std::uint32_t b, const PairParams& params);
     std::uint32_t count() const { return count_; }
+    /// The history scalars per contact of the table's pairs: the most any pair's model declares
+    /// (0 if none declares any: the stores then keep none).
+    unsigned historyScalars() const;
 
   private:
     std::uint32_t count_ = 0;
