@@ -10,7 +10,8 @@
 namespace veridem::dem
 {
 
-Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius)
+Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius,
+                         const ContactHistory& history)
 {
     if (p.normalModel == NormalModel::Jkr) // a formed contact: also at delta_c < delta <= 0
         return jkrStoredEnergy(p.effectiveModulus, effectiveRadius, p.workOfAdhesion, overlap);
@@ -27,6 +28,9 @@ Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius
                dmtPullOffForce<Real>(effectiveRadius, p.workOfAdhesion) * overlap;
     case NormalModel::Jkr: // above
         break;
+    case NormalModel::Thornton: // the work its unloading branch gives back (history: delta_max)
+        return thorntonStoredEnergy(p.effectiveModulus, effectiveRadius, p.yieldPressure, overlap,
+                                    history.scalars[0]);
     }
     return 0;
 }
@@ -50,7 +54,7 @@ ContactRecord recordOf(const PairParams& params, const ContactInput& in, const C
     const Real kt = terms.coefficients.kt, kr = terms.rollingStiffness;
     r.rollingDissipative =
         params.rollingModel == RollingModel::Epsd ? terms.rollingDamping : out.rollingTorque;
-    r.normalEnergy = normalElasticEnergy(params, in.overlap, in.effectiveRadius);
+    r.normalEnergy = normalElasticEnergy(params, in.overlap, in.effectiveRadius, history);
     r.tangentialEnergy = 0.5 * kt * lengthSquared(history.tangentialSpring);
     r.tangentialEnergyBefore = 0.5 * kt * lengthSquared(terms.tangentialStart);
     // Slip work, midpoint in the spring: kt (xi0 + xi1)/2 . (xi_trial - xi1).

@@ -58,7 +58,9 @@ std::vector<ContactRecord> evaluateContacts(const World& world, Real dt, Real* b
 /// The energy stored in the normal spring of a formed pair at overlap delta [m] [J]: the integral
 /// of the law's elastic normal force from 0 to delta (linear kn delta^2 / 2; Hertz
 /// (8/15) E* sqrt(R*) delta^(5/2); DMT that minus 2 pi w R* delta; JKR jkrStoredEnergy,
-/// models/cohesion.h, also for delta_c < delta <= 0). R* [m].
-Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius);
+/// models/cohesion.h, also for delta_c < delta <= 0; Thornton the work its unloading branch from
+/// delta_max = history.scalars[0] [m] gives back, thorntonStoredEnergy). R* [m].
+Real normalElasticEnergy(const PairParams& p, Real overlap, Real effectiveRadius,
+                         const ContactHistory& history = {});
 
 } // namespace veridem::dem

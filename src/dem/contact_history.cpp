@@ -14,6 +14,8 @@ void ContactHistoryStore::carry(const std::uint32_t* source, std::size_t count)
         rolling.assign(oldCount, Vec3{});
     if (keepFormed && formed.size() < oldCount)
         formed.assign(oldCount, 0);
+    if (scalarCount > 0 && scalars.size() < oldCount * scalarCount)
+        scalars.assign(oldCount * scalarCount, 0.0);
     const std::size_t room = std::max(count, oldCount);
     resizeGrowOnly(spring, room);
     if (keepRolling)
@@ -24,6 +26,10 @@ void ContactHistoryStore::carry(const std::uint32_t* source, std::size_t count)
         resizeGrowOnly(formed, room);
     else
         formed.clear();
+    if (scalarCount > 0)
+        resizeGrowOnly(scalars, room * scalarCount);
+    else
+        scalars.clear();
     const auto move = [&](std::size_t to, std::size_t from)
     {
         spring[to] = spring[from];
@@ -31,6 +37,8 @@ void ContactHistoryStore::carry(const std::uint32_t* source, std::size_t count)
             rolling[to] = rolling[from];
         if (keepFormed)
             formed[to] = formed[from];
+        for (unsigned s = 0; s < scalarCount; ++s)
+            scalars[to * scalarCount + s] = scalars[from * scalarCount + s];
     };
     // In place: a contact whose source lies after it is moved in ascending order, one whose source
     // lies before it in descending order; neither move overwrites a source still to be read.
@@ -48,12 +56,15 @@ void ContactHistoryStore::carry(const std::uint32_t* source, std::size_t count)
                 rolling[a] = Vec3{};
             if (keepFormed)
                 formed[a] = 0;
+            for (unsigned s = 0; s < scalarCount; ++s)
+                scalars[a * scalarCount + s] = 0;
         }
     spring.resize(count);
     if (keepRolling)
         rolling.resize(count);
     if (keepFormed)
         formed.resize(count);
+    scalars.resize(count * scalarCount);
 }
 
 void ContactHistoryStore::clear()
@@ -61,11 +72,13 @@ void ContactHistoryStore::clear()
     spring.clear();
     rolling.clear();
     formed.clear();
+    scalars.clear();
 }
 
 std::size_t ContactHistoryStore::memoryBytes() const
 {
-    return spring.capacity() * sizeof(Vec3) + rolling.capacity() * sizeof(Vec3) + formed.capacity();
+    return spring.capacity() * sizeof(Vec3) + rolling.capacity() * sizeof(Vec3) + formed.capacity() +
+           scalars.capacity() * sizeof(Real);
 }
 
 } // namespace veridem::dem

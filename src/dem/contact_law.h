@@ -15,7 +15,10 @@
 #include "dem/models/normal.h"
 #include "dem/models/rolling.h"
 #include "dem/models/tangential.h"
+#include "dem/models/thornton.h"
 
+#include <array>
+#include <cmath>
 #include <iterator>
 #include <type_traits>
 #include <utility>
@@ -118,6 +121,7 @@ template <class T> struct LawParamsOf
     T rollingTwist;   // 1: the rolling torque also opposes twist about the normal; 0: not [-]
     T rollingViscous; // type B c_r [s/m]
     T adhesion;       // work of adhesion w [J/m^2] (JKR, DMT)
+    T yieldPressure;  // limiting contact pressure p_y [Pa] (Thornton)
 };
 using LawParams = LawParamsOf<Real>;
 
@@ -127,10 +131,10 @@ using LawParams = LawParamsOf<Real>;
 /// compiling until it is bound here, and no reordering can pair two different fields.
 template <class A, class B, class F> VERIDEM_HOT_INLINE void forEachLawParam(A& a, B& b, F&& f)
 {
-    auto& [a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13] = a;
-    auto& [b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11, b12, b13] = b;
+    auto& [a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13, a14] = a;
+    auto& [b0, b1, b2, b3, b4, b5, b6, b7, b8, b9, b10, b11, b12, b13, b14] = b;
     f(a0, b0), f(a1, b1), f(a2, b2), f(a3, b3), f(a4, b4), f(a5, b5), f(a6, b6);
-    f(a7, b7), f(a8, b8), f(a9, b9), f(a10, b10), f(a11, b11), f(a12, b12), f(a13, b13);
+    f(a7, b7), f(a8, b8), f(a9, b9), f(a10, b10), f(a11, b11), f(a12, b12), f(a13, b13), f(a14, b14);
 }
 
 /// The law's parameters of a pair (designated: a reordering of LawParamsOf does not compile).
@@ -150,7 +154,8 @@ inline LawParams lawParams(const PairParams& p)
             .rollingDamping = p.rollingDampingRatio,
             .rollingTwist = p.rollingTwist ? 1.0 : 0.0,
             .rollingViscous = p.rollingViscous,
-            .adhesion = p.workOfAdhesion};
+            .adhesion = p.workOfAdhesion,
+            .yieldPressure = p.yieldPressure};
 }
 
 /// Geometry and kinematics of one contact, as seen by particle i.
@@ -174,6 +179,9 @@ template <class T> struct ContactHistoryOf
     lanes::Vec3Of<T> tangentialSpring{}; // xi [m]
     lanes::Vec3Of<T> rollingSpring{};    // EPSD elastic torque [N m]
     T formed{}; // 1 while a JKR contact is formed, else 0 [-] (the law writes 1 for other models)
+    // The normal model's own history (ModelEntry::historyScalars of them; zero at first touch;
+    // units the model's): e.g. Thornton's largest overlap [m].
+    std::array<T, kHistoryScalarRoom> scalars{};
 };
 using ContactHistory = ContactHistoryOf<Real>;
 
@@ -310,6 +318,16 @@ VERIDEM_HOT_INLINE ContactOutputOf<T> contactLaw(const LawParamsOf<T>& p, const 
         elastic = hertzElasticForce<T>(p.modulus, in.effectiveRadius, in.overlap);
     else if constexpr (Model::normal == NormalModel::Dmt)
         elastic = dmtForce<T>(p.modulus, in.effectiveRadius, p.adhesion, in.overlap);
+    else if constexpr (Model::normal == NormalModel::Thornton)
+    {
+        // The largest overlap so far, this step's included (history scalar 0): the unloading
+        // branch hangs from it. (Scalar only: models with history scalars run one contact at a
+        // time, dem/exec/law_batch.h.)
+        static_assert(std::is_same_v<T, Real>, "a Thornton contact runs on the scalar path");
+        history.scalars[0] = std::fmax(history.scalars[0], in.overlap);
+        elastic =
+            thorntonForce(p.modulus, in.effectiveRadius, p.yieldPressure, in.overlap, history.scalars[0]);
+    }
     else
         elastic = jkrForce<T>(p.modulus, in.effectiveRadius, p.adhesion, contactRadius);
     // Contact transitions. The dashpot force jumps to etaN |vn| at first touch and from it at

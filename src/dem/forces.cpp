@@ -108,7 +108,9 @@ void pairForcesOfSlots(World& world, Real dt, bool sumsAreZero)
     NeighborList& list = world.neighbors;
     const std::size_t n = p.size();
     const std::size_t pairCount = list.size();
-    const bool allBatchable = world.exec.batchedContactKernel;
+    // (The lane kernels carry no history scalars: a scene whose model declares some runs the
+    // general law one contact at a time, the same law.)
+    const bool allBatchable = world.exec.batchedContactKernel && world.pairHistory.scalarCount == 0;
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
     const BatchLaws perBatch = batchLaws(world, uniform);

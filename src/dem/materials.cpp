@@ -65,6 +65,19 @@ void validateMaterial(const Material& m)
         bad(m, "surface energy must be finite and >= 0 J/m^2");
     if (m.surfaceEnergy > 0 && !isAdhesive(m.normalModel))
         bad(m, "surface energy is read only by the \"jkr\" and \"dmt\" models");
+    if (m.normalModel == NormalModel::Thornton)
+    {
+        if (!(m.yieldStress > 0))
+            bad(m, "yield stress must be > 0 Pa for the \"thornton\" model");
+        const Real limit = thorntonYieldStressLimit(m.youngsModulus, m.poissonRatio);
+        if (!(m.yieldStress < limit))
+            bad(m, "yield stress must be below E / (pi (1 - nu^2)) = " + std::to_string(limit) +
+                       " Pa: at that pressure a like pair would yield only at a contact radius of R*");
+        if (m.normalDampingRate >= 0)
+            bad(m, "the \"thornton\" model has no viscous damping (its energy is lost to plastic flow)");
+    }
+    else if (m.yieldStress != 0)
+        bad(m, "yield stress is read only by the \"thornton\" model");
 }
 
 Real hertzBetaFromRestitution(NormalModel model, Real e)
@@ -95,6 +108,11 @@ PairParams mixMaterials(const Material& a, const Material& b)
     const Real e = 0.5 * (a.restitution + b.restitution);
     p.dampingRatio = dampingRatioFromRestitution(e);
     p.hertzBeta = hertzBetaFromRestitution(p.normalModel, e);
+    if (p.normalModel == NormalModel::Thornton) // (no dashpot: beta = 0)
+    {
+        p.hertzBeta = 0;
+        p.yieldPressure = std::min(a.yieldStress, b.yieldStress);
+    }
     if (a.normalDampingRate >= 0 || b.normalDampingRate >= 0)
         p.dampingRate = 0.5 * (std::fmax(a.normalDampingRate, 0) + std::fmax(b.normalDampingRate, 0));
     const Real ratioA = a.tangentialDampingRatio, ratioB = b.tangentialDampingRatio;
@@ -119,6 +137,14 @@ void PairTable::build(const std::vector<Material>& materials)
     for (std::uint32_t a = 0; a < count_; ++a)
         for (std::uint32_t b = 0; b < count_; ++b)
             table_[a * count_ + b] = mixMaterials(materials[a], materials[b]);
+}
+
+unsigned PairTable::historyScalars() const
+{
+    unsigned most = 0;
+    for (const PairParams& p : table_)
+        most = std::max(most, historyScalarsOf(p.normalModel));
+    return most;
 }
 
 void PairTable::set(std::uint32_t a, std::uint32_t b, const PairParams& params)

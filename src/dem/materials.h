@@ -7,9 +7,11 @@
 //   restitution e, friction mu, rolling friction: arithmetic mean (a [[pair]] scene entry overrides)
 //   work of adhesion: w = 2 sqrt(gamma1 gamma2) (= 2 gamma for like surfaces; the geometric-mean
 //   combining rule of Girifalco & Good 1957, Israelachvili, Intermolecular and Surface Forces)
+//   Thornton's limiting pressure: p_y = min(p_y1, p_y2) (the softer surface flows first)
 #pragma once
 
 #include "core/vec3.h"
+#include "dem/models/thornton.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -22,24 +24,33 @@ namespace veridem::dem
 
 enum class NormalModel
 {
-    Linear, // linear spring-dashpot
-    Hertz,  // Hertz-Mindlin with restitution damping
-    Jkr,    // Hertz-Mindlin elasticity with JKR adhesion (models/cohesion.h; needs surfaceEnergy)
-    Dmt     // Hertz-Mindlin elasticity with DMT adhesion (models/cohesion.h)
+    Linear,  // linear spring-dashpot
+    Hertz,   // Hertz-Mindlin with restitution damping
+    Jkr,     // Hertz-Mindlin elasticity with JKR adhesion (models/cohesion.h; needs surfaceEnergy)
+    Dmt,     // Hertz-Mindlin elasticity with DMT adhesion (models/cohesion.h)
+    Thornton // Hertz elasticity to a limiting contact pressure, then plastic (models/thornton.h)
 };
 
-/// A registered model: its enumerator and its scene name (`model`, `rolling_model`).
+/// A registered model: its enumerator, its scene name (`model`, `rolling_model`) and the number of
+/// history scalars [-] a contact of the model carries from step to step (ContactHistory::scalars:
+/// the model's own state, e.g. a largest overlap; scalars are invariant under swapping the
+/// partners). The contact history stores keep that many doubles per contact, only in scenes that
+/// use such a model (dem/contact_history.h); every store, rebuild, checkpoint and MPI exchange
+/// carries them without naming the model.
 template <class Model> struct ModelEntry
 {
     Model model;
     const char* name;
+    unsigned historyScalars = 0;
 };
 /// Every normal model, in the enumerators' order: the scene reader names, and the law dispatches
 /// (withLawModel, forEachLawModel, dem/contact_law.h), exactly the models listed here.
-inline constexpr ModelEntry<NormalModel> kNormalModelList[] = {{NormalModel::Linear, "linear"},
-                                                               {NormalModel::Hertz, "hertz"},
-                                                               {NormalModel::Jkr, "jkr"},
-                                                               {NormalModel::Dmt, "dmt"}};
+inline constexpr ModelEntry<NormalModel> kNormalModelList[] = {
+    {NormalModel::Linear, "linear"},
+    {NormalModel::Hertz, "hertz"},
+    {NormalModel::Jkr, "jkr"},
+    {NormalModel::Dmt, "dmt"},
+    {NormalModel::Thornton, "thornton", kThorntonHistoryScalars}};
 
 /// True for the models whose contacts pull (JKR, DMT).
 constexpr bool isAdhesive(NormalModel m)
@@ -81,6 +92,21 @@ constexpr bool listedInOrder(const ModelEntry<Model> (&list)[kCount])
 }
 static_assert(listedInOrder(kNormalModelList) && listedInOrder(kRollingModelList));
 
+/// The history scalars [-] a contact of normal model m carries (its list entry's).
+constexpr unsigned historyScalarsOf(NormalModel m)
+{
+    return kNormalModelList[static_cast<std::size_t>(m)].historyScalars;
+}
+/// The room for history scalars in ContactHistory: the most any listed model declares (at least
+/// one, so that the array is never empty).
+inline constexpr unsigned kHistoryScalarRoom = []
+{
+    unsigned most = 1;
+    for (const auto& entry : kNormalModelList)
+        most = entry.historyScalars > most ? entry.historyScalars : most;
+    return most;
+}();
+
 /// A model value outside its list: never made by the scene reader, which names only listed models;
 /// the law's dispatch stops the run with this message rather than run another model's law.
 [[noreturn]] void unregisteredContactModel(unsigned value);
@@ -97,6 +123,7 @@ struct Material
     Real youngsModulus = 0; // E [Pa]
     Real poissonRatio = 0;  // nu [-]
     Real surfaceEnergy = 0; // gamma [J/m^2] (JKR, DMT): work of adhesion w = 2 gamma for like surfaces
+    Real yieldStress = 0;   // p_y [Pa] (Thornton): the limiting contact pressure of plastic flow
     // Damping
     Real restitution = 0.8; // e in (0, 1]
     Real normalDampingRate =
@@ -128,6 +155,7 @@ struct PairParams
     Real effectiveModulus = 0;       // E* [Pa] (Hertz)
     Real effectiveShearModulus = 0;  // G* [Pa] (Hertz-Mindlin kt = 8 G* sqrt(R* delta))
     Real workOfAdhesion = 0;         // w [J/m^2] (JKR, DMT): 2 sqrt(gamma_a gamma_b)
+    Real yieldPressure = 0;          // p_y [Pa] (Thornton): the smaller of the two materials'
     Real dampingRatio = 0;           // zeta from e (linear) [-]
     Real hertzBeta = 0;              // beta from e (Hertz, JKR, DMT: hertzBetaFromRestitution) [-]
     Real dampingRate = -1;           // gamma_n [1/s] if >= 0
@@ -158,6 +186,9 @@ class PairTable
     /// Replaces the parameters of the ordered pair (a, b).
     void set(std::uint32_t a, std::uint32_t b, const PairParams& params);
     std::uint32_t count() const { return count_; }
+    /// The history scalars per contact of the table's pairs: the most any pair's model declares
+    /// (0 if none declares any: the stores then keep none).
+    unsigned historyScalars() const;
 
   private:
     std::uint32_t count_ = 0;

@@ -169,6 +169,7 @@ void NeighborList::renameParticles(const std::vector<std::uint32_t>& newIndex, C
     std::sort(kept.begin(), kept.end(), [](const Renamed& a, const Renamed& b) { return a.key < b.key; });
     ContactHistoryStore renamed(history.keepFormed);
     renamed.keepRolling = history.keepRolling;
+    renamed.scalarCount = history.scalarCount;
     const bool rolling = history.keepRolling && history.rolling.size() == history.spring.size();
     const bool formed = history.keepFormed && history.formed.size() == history.spring.size();
     std::vector<std::uint32_t> newFirst(kept.size()), newSecond(kept.size());
@@ -177,6 +178,7 @@ void NeighborList::renameParticles(const std::vector<std::uint32_t>& newIndex, C
         renamed.rolling.resize(kept.size());
     if (history.keepFormed)
         renamed.formed.resize(kept.size());
+    renamed.resizeScalars(kept.size());
     for (std::size_t a = 0; a < kept.size(); ++a)
     {
         const Renamed& k = kept[a];
@@ -189,6 +191,7 @@ void NeighborList::renameParticles(const std::vector<std::uint32_t>& newIndex, C
             renamed.rolling[a] = sign * history.rolling[k.from];
         if (formed)
             renamed.formed[a] = history.formed[k.from];
+        renamed.copyScalars(a, history, k.from); // (scalars do not change sign)
     }
     adoptCandidates(std::move(newFirst), std::move(newSecond), history, std::move(renamed));
 }

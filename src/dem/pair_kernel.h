@@ -40,13 +40,17 @@ struct PairSink
     Vec3* spring;              // tangential spring [m]
     Vec3* rolling;             // rolling spring [N m], or null if none is kept
     std::uint8_t* mayBeActive; // whether the contact may be formed (ContactHistoryStore::formed)
+    Real* scalars;             // the history scalars (ContactHistoryStore::scalars), or null if none
+    unsigned scalarCount;      // per candidate
 
     explicit PairSink(World& world)
         : force(world.particles.force.data()), torque(world.particles.torque.data()),
           deferredIndex(world.neighbors.activeDeferred.data()), deferred(world.neighbors.deferred.data()),
           spring(world.pairHistory.spring.data()),
           rolling(world.pairHistory.keepRolling ? world.pairHistory.rolling.data() : nullptr),
-          mayBeActive(world.pairHistory.formed.data())
+          mayBeActive(world.pairHistory.formed.data()),
+          scalars(world.pairHistory.scalarCount ? world.pairHistory.scalars.data() : nullptr),
+          scalarCount(world.pairHistory.scalarCount)
     {
     }
 
@@ -54,7 +58,10 @@ struct PairSink
     /// and set, through the sink's bases).
     ContactHistory history(std::size_t k) const
     {
-        return {spring[k], rolling ? rolling[k] : Vec3{}, Real(mayBeActive[k])};
+        ContactHistory h{spring[k], rolling ? rolling[k] : Vec3{}, Real(mayBeActive[k])};
+        for (unsigned s = 0; s < scalarCount; ++s)
+            h.scalars[s] = scalars[k * scalarCount + s];
+        return h;
     }
     void setHistory(std::size_t k, const ContactHistory& h) const
     {
@@ -62,6 +69,8 @@ struct PairSink
         if (rolling)
             rolling[k] = h.rollingSpring;
         mayBeActive[k] = h.formed != 0;
+        for (unsigned s = 0; s < scalarCount; ++s)
+            scalars[k * scalarCount + s] = h.scalars[s];
     }
 
     static void add(PaddedVec3& sum, const Vec3& v)

@@ -161,6 +161,7 @@ void addInsertedParticles(World& world, std::size_t from, const ParticleIndex& i
     {
         // (Rolling springs kept as the pair candidates keep them: an EPSD model is in use.)
         world.periodicPairs.history.keepRolling = world.pairHistory.keepRolling;
+        world.periodicPairs.history.scalarCount = world.pairHistory.scalarCount;
         world.periodicPairs.addPairs(p, world.neighbors.anyFixed, first, second, shift);
     }
     // Walls: skin/2 of the particle's motion plus up to skin of the wall's (WallContactList).

@@ -235,11 +235,13 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
     // The history by key: from this list's old pairs, else from the neighbour list's candidates.
     ContactHistoryStore carried(true);
     carried.keepRolling = pairHistory.keepRolling;
+    carried.scalarCount = pairHistory.scalarCount;
     const std::size_t pairs = newFirst.size();
     carried.spring.assign(pairs, Vec3{});
     if (carried.keepRolling)
         carried.rolling.assign(pairs, Vec3{});
     carried.formed.assign(pairs, 0);
+    carried.resizeScalars(pairs);
     const bool oldRolling = history.keepRolling && history.rolling.size() == history.size();
     const bool mainRolling = pairHistory.keepRolling && pairHistory.rolling.size() == pairHistory.size();
     std::vector<std::uint8_t> continued(first.size(), 0); // old pair k is still periodic
@@ -260,6 +262,7 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
             if (carried.keepRolling && oldRolling)
                 carried.rolling[k] = history.rolling[old];
             carried.formed[k] = history.formed[old];
+            carried.copyScalars(k, history, old);
         }
         else if (candidate < candidates &&
                  pairKey(neighbors.activeFirst[candidate], neighbors.activeSecond[candidate]) == wanted)
@@ -268,6 +271,7 @@ void PeriodicPairs::rebuild(const PeriodicDomain& domain, const ParticleStore& p
             if (carried.keepRolling && mainRolling)
                 carried.rolling[k] = pairHistory.rolling[candidate];
             carried.formed[k] = pairHistory.formed[candidate];
+            carried.copyScalars(k, pairHistory, candidate);
         }
     }
 
@@ -304,6 +308,7 @@ void PeriodicPairs::handOverFormed(const std::vector<std::uint8_t>& continued, N
         return;
     ContactHistoryStore merged(true);
     merged.keepRolling = pairHistory.keepRolling;
+    merged.scalarCount = pairHistory.scalarCount;
     std::vector<std::uint32_t> mergedFirst, mergedSecond;
     std::size_t a = 0;
     const auto take =
@@ -315,6 +320,7 @@ void PeriodicPairs::handOverFormed(const std::vector<std::uint8_t>& continued, N
         if (merged.keepRolling)
             merged.rolling.push_back(rolling ? from.rolling[e] : Vec3{});
         merged.formed.push_back(from.formed[e]);
+        merged.appendScalars(&from, e);
     };
     for (const std::size_t k : leaving)
     {
@@ -356,6 +362,7 @@ void PeriodicPairs::addPairs(const ParticleStore& particles, bool anyFixed,
     std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
     PeriodicPairs merged;
     merged.history.keepRolling = history.keepRolling;
+    merged.history.scalarCount = history.scalarCount;
     const bool rolling = history.keepRolling && history.rolling.size() == history.size();
     for (const Entry& e : order)
     {
@@ -370,6 +377,7 @@ void PeriodicPairs::addPairs(const ParticleStore& particles, bool anyFixed,
             if (history.keepRolling)
                 merged.history.rolling.push_back(rolling ? history.rolling[e.from] : Vec3{});
             merged.history.formed.push_back(history.formed[e.from]);
+            merged.history.appendScalars(&history, e.from);
             continue;
         }
         const Real mi = particles.mass[i], mj = particles.mass[j];
@@ -382,6 +390,7 @@ void PeriodicPairs::addPairs(const ParticleStore& particles, bool anyFixed,
         if (history.keepRolling)
             merged.history.rolling.push_back(Vec3{});
         merged.history.formed.push_back(0);
+        merged.history.appendScalars(nullptr, 0);
     }
     *this = std::move(merged);
 }
@@ -405,6 +414,7 @@ void PeriodicPairs::renameParticles(const std::vector<std::uint32_t>& newIndex)
     std::sort(kept.begin(), kept.end(), [](const Renamed& a, const Renamed& b) { return a.key < b.key; });
     PeriodicPairs renamed;
     renamed.history.keepRolling = history.keepRolling;
+    renamed.history.scalarCount = history.scalarCount;
     const bool rolling = history.keepRolling && history.rolling.size() == history.size();
     for (const Renamed& r : kept)
     {
@@ -419,6 +429,7 @@ void PeriodicPairs::renameParticles(const std::vector<std::uint32_t>& newIndex)
         if (history.keepRolling)
             renamed.history.rolling.push_back(rolling ? sign * history.rolling[r.from] : Vec3{});
         renamed.history.formed.push_back(history.formed[r.from]);
+        renamed.history.appendScalars(&history, r.from); // (scalars do not change sign)
     }
     *this = std::move(renamed);
 }

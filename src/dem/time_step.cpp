@@ -49,6 +49,9 @@ Limit contactLimit(const PairParams& params, Real effectiveMass, Real effectiveR
         deltaMax = std::pow(15.0 * effectiveMass * v * v /
                                 (16.0 * params.effectiveModulus * std::sqrt(effectiveRadius)),
                             0.4);
+        if (params.normalModel == NormalModel::Thornton) // deeper (plastic loading); its unloading
+            deltaMax = thorntonPeakOverlap(params.effectiveModulus, effectiveRadius, // stiffness is
+                                           params.yieldPressure, effectiveMass, v);  // Hertz's there
         kn = hertzNormalStiffness(params.effectiveModulus, effectiveRadius, deltaMax);
         contactTime =
             2.868 * std::pow(effectiveMass * effectiveMass /

@@ -285,6 +285,7 @@ void WallContactList::appendParticles(const ParticleStore& particles, std::size_
         history.rolling.resize(count, Vec3{});
     if (history.keepFormed)
         history.formed.resize(count, 0);
+    history.resizeScalars(count);
     if (recordLoads)
     {
         loadForce.resize(count, Vec3{});
@@ -304,11 +305,13 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
     std::sort(kept.begin(), kept.end());
     ContactHistoryStore renamed(history.keepFormed);
     renamed.keepRolling = history.keepRolling;
+    renamed.scalarCount = history.scalarCount;
     const bool rolling = history.keepRolling && history.rolling.size() == history.spring.size();
     std::vector<std::uint32_t> newParticle(kept.size()), newWall(kept.size());
     renamed.spring.resize(kept.size());
     if (rolling)
         renamed.rolling.resize(kept.size());
+    renamed.resizeScalars(kept.size());
     for (std::size_t k = 0; k < kept.size(); ++k)
     {
         newParticle[k] = static_cast<std::uint32_t>(kept[k].first >> 32);
@@ -316,6 +319,7 @@ void WallContactList::renameParticles(const std::vector<std::uint32_t>& newIndex
         renamed.spring[k] = history.spring[kept[k].second];
         if (rolling)
             renamed.rolling[k] = history.rolling[kept[k].second];
+        renamed.copyScalars(k, history, kept[k].second);
     }
     std::vector<Vec3> normals; // (a mesh group's slots stay together and in order: stable keys)
     if (!meshNormal.empty())

@@ -455,7 +455,7 @@ ContactHealth computeWallForces(World& world, Real dt, std::size_t begin, std::s
         return health;
     if (list.recordLoads)
         clearWallLoads(list, list.start[begin], list.start[end]);
-    if (world.exec.batchedContactKernel)
+    if (world.exec.batchedContactKernel && world.wallHistory.scalarCount == 0) // (as the pairs')
     {
         PlaneFrame frames[kMaxPlaneFrames];
         bool meshes;

@@ -446,6 +446,11 @@ void prepare(World& world)
             rollingHistory = rollingHistory || world.pairs(a, b).rollingModel == RollingModel::Epsd;
     world.pairHistory.keepRolling = rollingHistory;
     world.wallHistory.keepRolling = rollingHistory;
+    // History scalars are stored only if some pair's normal model declares them.
+    const unsigned scalars = world.pairs.historyScalars();
+    world.pairHistory.scalarCount = scalars;
+    world.wallHistory.scalarCount = scalars;
+    world.periodicPairs.history.scalarCount = scalars;
     world.neighbors.reach = pairTouchReach(world);
     refreshFixedParticles(world);
     rebuildContactLists(world);

@@ -109,6 +109,9 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     whole.health = local.health;
     whole.pairHistory.keepRolling = local.pairHistory.keepRolling;
     whole.wallHistory.keepRolling = local.wallHistory.keepRolling;
+    whole.pairHistory.scalarCount = local.pairHistory.scalarCount;
+    whole.wallHistory.scalarCount = local.wallHistory.scalarCount;
+    whole.periodicPairs.history.scalarCount = local.pairHistory.scalarCount;
     dem::ParticleStore gathered;
     std::vector<KeyedHistory> sources;
     for (int a = 0; a < size; ++a)

@@ -27,6 +27,9 @@ void exportPairOf(const dem::World& world, std::uint32_t i, std::uint32_t j,
     if (h.keepRolling && h.rolling.size() == h.size())
         e.rolling = sign * h.rolling[a];
     e.formed = h.keepFormed && h.formed.size() == h.size() ? h.formed[a] : 1;
+    out.scalarCount = h.scalarCount;
+    for (unsigned s = 0; s < h.scalarCount; ++s) // (scalars do not change sign)
+        e.scalars[s] = h.scalarOf(a, s);
     out.pairs.push_back(e);
 }
 } // namespace
@@ -53,6 +56,9 @@ void exportWallSlot(const dem::World& world, std::size_t k, KeyedHistory& out)
     e.spring = h.spring[k];
     if (h.keepRolling && h.rolling.size() == h.size())
         e.rolling = h.rolling[k];
+    out.scalarCount = h.scalarCount;
+    for (unsigned s = 0; s < h.scalarCount; ++s)
+        e.scalars[s] = h.scalarOf(k, s);
     if (k < list.meshNormal.size())
         e.normal = list.meshNormal[k];
     e.flat = k < list.meshFlat.size() ? list.meshFlat[k] : dem::WallContactList::kNotFlat;
@@ -67,7 +73,9 @@ void exportWallSlot(const dem::World& world, std::size_t k, KeyedHistory& out)
 void packHistory(const KeyedHistory& h, std::vector<std::byte>& out)
 {
     ByteWriter w{out};
-    out.reserve(out.size() + 16 + h.pairs.size() * kPairEntryBytes + h.walls.size() * kWallEntryBytes);
+    out.reserve(out.size() + 20 + (h.pairs.size() + h.walls.size()) * h.scalarCount * 8 +
+                h.pairs.size() * kPairEntryBytes + h.walls.size() * kWallEntryBytes);
+    w.put(static_cast<std::uint32_t>(h.scalarCount));
     w.put(static_cast<std::uint64_t>(h.pairs.size()));
     for (const PairHistoryEntry& e : h.pairs)
     {
@@ -76,6 +84,8 @@ void packHistory(const KeyedHistory& h, std::vector<std::byte>& out)
         w.put(e.spring);
         w.put(e.rolling);
         w.put(e.formed);
+        for (unsigned s = 0; s < h.scalarCount; ++s)
+            w.put(e.scalars[s]);
     }
     w.put(static_cast<std::uint64_t>(h.walls.size()));
     for (const WallHistoryEntry& e : h.walls)
@@ -88,6 +98,8 @@ void packHistory(const KeyedHistory& h, std::vector<std::byte>& out)
         w.put(e.flat);
         w.put(e.loadForce);
         w.put(e.loadMoment);
+        for (unsigned s = 0; s < h.scalarCount; ++s)
+            w.put(e.scalars[s]);
     }
 }
 
@@ -97,6 +109,11 @@ KeyedHistory unpackHistory(std::span<const std::byte> in, int from)
     if (in.empty())
         return h;
     ByteReader r{in};
+    h.scalarCount = r.get<std::uint32_t>();
+    if (h.scalarCount > dem::kHistoryScalarRoom)
+        throw SimulationError("MPI exchange: contact history from rank " + std::to_string(from) + " has " +
+                              std::to_string(h.scalarCount) + " history scalars per contact, at most " +
+                              std::to_string(dem::kHistoryScalarRoom) + " are known");
     const auto pairs = r.get<std::uint64_t>();
     if (pairs > in.size() / kPairEntryBytes)
         throw SimulationError("MPI exchange: contact history from rank " + std::to_string(from) + " names " +
@@ -109,6 +126,8 @@ KeyedHistory unpackHistory(std::span<const std::byte> in, int from)
         e.spring = r.vec3();
         e.rolling = r.vec3();
         e.formed = r.get<std::uint8_t>();
+        for (unsigned s = 0; s < h.scalarCount; ++s)
+            e.scalars[s] = r.get<Real>();
     }
     const auto walls = r.get<std::uint64_t>();
     if (walls > in.size() / kWallEntryBytes)
@@ -126,6 +145,8 @@ KeyedHistory unpackHistory(std::span<const std::byte> in, int from)
         e.flat = r.get<std::uint32_t>();
         e.loadForce = r.vec3();
         e.loadMoment = r.vec3();
+        for (unsigned s = 0; s < h.scalarCount; ++s)
+            e.scalars[s] = r.get<Real>();
     }
     if (!r.done())
         throw SimulationError("MPI exchange: contact history from rank " + std::to_string(from) + " has " +
@@ -183,7 +204,9 @@ void adoptPairs(dem::World& world, const LocalIndex& local, std::span<const Keye
         kept.end());
     dem::ContactHistoryStore adopted(world.pairHistory.keepFormed);
     adopted.keepRolling = world.pairHistory.keepRolling;
+    adopted.scalarCount = world.pairHistory.scalarCount;
     adopted.spring.resize(kept.size());
+    adopted.resizeScalars(kept.size());
     if (adopted.keepRolling)
         adopted.rolling.resize(kept.size());
     if (adopted.keepFormed)
@@ -201,6 +224,8 @@ void adoptPairs(dem::World& world, const LocalIndex& local, std::span<const Keye
             adopted.rolling[a] = sign * p.rolling;
         if (adopted.keepFormed)
             adopted.formed[a] = p.formed;
+        for (unsigned s = 0; s < adopted.scalarCount; ++s) // (sources keep the world's count)
+            adopted.scalars[a * adopted.scalarCount + s] = p.scalars[s];
     }
     world.neighbors.adoptCandidates(std::move(first), std::move(second), world.pairHistory,
                                     std::move(adopted));
@@ -235,7 +260,9 @@ void adoptWalls(dem::World& world, const LocalIndex& local, std::span<const Keye
                     [](const dem::Wall& w) { return std::holds_alternative<dem::MeshShape>(w.shape); });
     dem::ContactHistoryStore adopted(world.wallHistory.keepFormed);
     adopted.keepRolling = world.wallHistory.keepRolling;
+    adopted.scalarCount = world.wallHistory.scalarCount;
     adopted.spring.resize(n);
+    adopted.resizeScalars(n);
     if (adopted.keepRolling)
         adopted.rolling.resize(n);
     std::vector<std::uint32_t> particles(n), walls(n), flat(meshes ? n : 0);
@@ -248,6 +275,8 @@ void adoptWalls(dem::World& world, const LocalIndex& local, std::span<const Keye
         adopted.spring[k] = w.spring;
         if (adopted.keepRolling)
             adopted.rolling[k] = w.rolling;
+        for (unsigned s = 0; s < adopted.scalarCount; ++s)
+            adopted.scalars[k * adopted.scalarCount + s] = w.scalars[s];
         if (meshes)
         {
             normals[k] = w.normal;

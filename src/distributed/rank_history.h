@@ -12,6 +12,7 @@
 #include "core/vec3.h"
 #include "dem/world.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -25,6 +26,7 @@ struct PairHistoryEntry
     std::uint32_t lo = 0, hi = 0; // the two particles' ids, lo < hi
     Vec3 spring, rolling;         // tangential spring [m] and EPSD rolling spring [N m], lo first
     std::uint8_t formed = 0;      // NeighborList's formed flag
+    std::array<Real, dem::kHistoryScalarRoom> scalars{}; // the history scalars (KeyedHistory::scalarCount)
 };
 
 struct WallHistoryEntry
@@ -34,12 +36,14 @@ struct WallHistoryEntry
     Vec3 normal;                    // the slot's mesh normal (zero if none)
     std::uint32_t flat = 0;         // the slot's flat triangle (WallContactList::kNotFlat if none)
     Vec3 loadForce, loadMoment;     // the slot's recorded load [N], [N m] (zero unless recorded)
+    std::array<Real, dem::kHistoryScalarRoom> scalars{}; // the history scalars (KeyedHistory::scalarCount)
 };
 
 struct KeyedHistory
 {
     std::vector<PairHistoryEntry> pairs;
     std::vector<WallHistoryEntry> walls;
+    unsigned scalarCount = 0; // history scalars per entry (ContactHistoryStore::scalarCount)
 };
 
 /// Bytes a pair entry and a wall entry take in an exchange.
@@ -50,7 +54,8 @@ inline constexpr std::size_t kWallEntryBytes = 4 + 4 + 9 * 8 + 4 + 6 * 8;
 /// particle i with take(i), and of the wall slots of each particle i with take(i).
 template <class Take> void exportHistory(const dem::World& world, Take&& take, KeyedHistory& out);
 
-/// The entries as bytes (a pair count, then the entries) and back.
+/// The entries as bytes (the scalar count, a pair count, then the entries, each with its scalars)
+/// and back.
 void packHistory(const KeyedHistory& h, std::vector<std::byte>& out);
 KeyedHistory unpackHistory(std::span<const std::byte> in, int from);
 

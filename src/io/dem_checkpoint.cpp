@@ -8,7 +8,11 @@ namespace veridem::dem
 {
 
 /// The private state of the contact lists, with their contacts' history stores, for the checkpoint
-/// (friend of NeighborList and WallContactList). The record order here is the file's.
+/// (friend of NeighborList and WallContactList). The record order here is the file's. A store's
+/// history scalars (acHS, wcHS, pbHS) are recorded only in scenes whose normal models declare some
+/// (ContactHistoryStore::scalarCount, set by the reader from the scene's pair table before it
+/// reads): so the files of every other scene are those of version 6 before the scalars existed,
+/// and they are read as before.
 struct CheckpointAccess
 {
     static void write(io::CheckpointWriter& out, const NeighborList& n, const ContactHistoryStore& h)
@@ -30,6 +34,8 @@ struct CheckpointAccess
         out.array("acSp", h.spring);
         out.array("acRo", h.rolling);
         out.array("acMB", h.formed);
+        if (h.scalarCount > 0)
+            out.array("acHS", h.scalars);
         out.array("acMa", n.activeMass);
         out.array("acDe", n.activeDeferred);
         out.value("nbSR", std::uint8_t(n.slotsRebuilt_));
@@ -60,6 +66,8 @@ struct CheckpointAccess
         in.array("acSp", h.spring);
         in.array("acRo", h.rolling);
         in.array("acMB", h.formed);
+        if (h.scalarCount > 0)
+            in.array("acHS", h.scalars);
         in.array("acMa", n.activeMass);
         in.array("acDe", n.activeDeferred);
         n.slotsRebuilt_ = in.value<std::uint8_t>("nbSR") != 0;
@@ -79,6 +87,8 @@ struct CheckpointAccess
         out.array("wcWa", w.wall);
         out.array("wcTS", h.spring);
         out.array("wcRS", h.rolling);
+        if (h.scalarCount > 0)
+            out.array("wcHS", h.scalars);
         out.array("wcSt", w.start);
         out.array("wcDB", w.wallDisplacementAtBuild_);
         out.array("wcMN", w.meshNormal);
@@ -95,6 +105,8 @@ struct CheckpointAccess
         in.array("wcWa", w.wall);
         in.array("wcTS", h.spring);
         in.array("wcRS", h.rolling);
+        if (h.scalarCount > 0)
+            in.array("wcHS", h.scalars);
         in.array("wcSt", w.start);
         in.array("wcDB", w.wallDisplacementAtBuild_);
         in.array("wcMN", w.meshNormal);
@@ -108,6 +120,7 @@ struct CheckpointAccess
         w.meshTriangles.clear();
         const std::size_t slots = w.particle.size();
         bool ok = w.wall.size() == slots && h.spring.size() == slots &&
+                  h.scalars.size() == slots * h.scalarCount &&
                   h.rolling.size() == (h.keepRolling ? slots : h.rolling.size()) &&
                   (h.rolling.empty() || h.rolling.size() == slots) && w.start.size() == particles + 1 &&
                   w.wallDisplacementAtBuild_.size() <= walls &&
@@ -160,6 +173,7 @@ struct CheckpointAccess
                   n.firstStart.size() == particles + 1 && n.incomingStart.size() == particles + 1 &&
                   n.incomingEntry.size() == entries && n.activeSecond.size() == candidates &&
                   h.spring.size() == candidates && (h.rolling.empty() || h.rolling.size() == candidates) &&
+                  h.scalars.size() == candidates * h.scalarCount &&
                   (!h.keepRolling || h.rolling.size() == candidates) && h.formed.size() == candidates &&
                   (pending || (n.activeSlots.size() == candidates && n.activeMass.size() == candidates &&
                                n.activeDeferred.size() == candidates)) &&
@@ -271,6 +285,8 @@ void writePeriodicPairs(CheckpointWriter& out, const dem::PeriodicPairs& pairs)
     out.array("pbSp", pairs.history.spring);
     out.array("pbRo", pairs.history.rolling);
     out.array("pbMB", pairs.history.formed);
+    if (pairs.history.scalarCount > 0)
+        out.array("pbHS", pairs.history.scalars);
 }
 
 void readPeriodicPairs(CheckpointReader& in, dem::PeriodicPairs& pairs, bool keepRolling,
@@ -284,6 +300,8 @@ void readPeriodicPairs(CheckpointReader& in, dem::PeriodicPairs& pairs, bool kee
     readSized(in, "pbSp", pairs.history.spring, count);
     readSized(in, "pbRo", pairs.history.rolling, keepRolling ? count : 0);
     readSized(in, "pbMB", pairs.history.formed, count);
+    if (pairs.history.scalarCount > 0)
+        readSized(in, "pbHS", pairs.history.scalars, count * pairs.history.scalarCount);
     pairs.history.keepRolling = keepRolling;
     for (std::size_t k = 0; k < count; ++k)
         if (pairs.first[k] >= pairs.second[k] || pairs.second[k] >= particles)
@@ -453,6 +471,12 @@ CheckpointOutputs readDemCheckpoint(const std::filesystem::path& path, dem::Worl
         }
     }
 
+    // The history scalars the scene's models declare (prepare() sets the same count).
+    if (world.pairs.count() != world.materials.size())
+        world.pairs.build(world.materials);
+    const unsigned scalars = world.pairs.historyScalars();
+    world.pairHistory.scalarCount = world.wallHistory.scalarCount = world.periodicPairs.history.scalarCount =
+        scalars;
     dem::CheckpointAccess::read(in, world.neighbors, world.pairHistory, n);
     readPeriodicPairs(in, world.periodicPairs, world.pairHistory.keepRolling, n);
     dem::CheckpointAccess::read(in, world.wallContacts, world.wallHistory, n, world.walls);

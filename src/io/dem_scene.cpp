@@ -81,7 +81,23 @@ dem::Material readMaterial(TableReader& t)
             m.surfaceEnergy = t.requiredNumber("surface_energy");
             t.requireNonNegative("surface_energy", m.surfaceEnergy, "J/m^2");
         }
+        if (m.normalModel == dem::NormalModel::Thornton)
+        {
+            m.yieldStress = t.requiredNumber("yield_stress");
+            t.requirePositive("yield_stress", m.yieldStress, "Pa");
+            const Real limit = dem::thorntonYieldStressLimit(m.youngsModulus, m.poissonRatio);
+            if (!(m.yieldStress < limit))
+                t.fail("yield_stress", "must be below E / (pi (1 - nu^2)) = " + std::to_string(limit) +
+                                           " Pa (at that pressure a like pair yields only at a contact "
+                                           "radius of R*)");
+            for (const char* key : {"restitution", "damping_rate", "tangential_damping_ratio"})
+                if (t.has(key))
+                    t.fail(key, "is not read by the \"thornton\" model: its restitution follows from "
+                                "yield_stress (plastic flow, no dashpot)");
+        }
     }
+    if (m.normalModel != dem::NormalModel::Thornton && t.has("yield_stress"))
+        t.fail("yield_stress", "is read only by model = \"thornton\"");
     m.restitution = t.number("restitution", 0.8);
     if (!(m.restitution > 0 && m.restitution <= 1))
         t.fail("restitution", "must be in (0, 1] (got " + std::to_string(m.restitution) + ")");
@@ -257,6 +273,9 @@ void applyPairOverride(TableReader& t, dem::World& world)
     }
     if (auto e = t.optionalNumber("restitution"))
     {
+        if (params.normalModel == dem::NormalModel::Thornton)
+            t.fail("restitution", "is not read by the \"thornton\" model: its restitution follows from "
+                                  "yield_stress");
         if (!(*e > 0 && *e <= 1))
             t.fail("restitution", "must be in (0, 1]");
         params.dampingRatio = dem::dampingRatioFromRestitution(*e);
@@ -368,6 +387,13 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         top.fail("material", "is missing: define at least one [[material]]");
     for (auto& m : materials)
         world.addMaterial(readMaterial(m));
+    if (scene.measurements.energy)
+        for (const dem::Material& m : world.materials)
+            if (m.normalModel == dem::NormalModel::Thornton)
+                top.fail("material",
+                         "'" + m.name +
+                             "': the \"thornton\" model cannot be combined with [output] energy = "
+                             "true yet (the ledger has no plastic work term)");
     scene.measurements.zones = readZones(top, world);
 
     auto pairs = top.arrayOfTables("pair");

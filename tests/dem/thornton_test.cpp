@@ -120,3 +120,23 @@ TEST(Thornton, IntegratedImpactFollowsTheClosedFormToSecondOrder)
     EXPECT_LT(worst400, worst50 / 4);
     EXPECT_NEAR(reboundRestitution(0.5 * vy, 50), 1.0, 1e-5); // elastic: Verlet keeps energy to O(dt^2)
 }
+
+TEST(Thornton, PeakOverlapIsTheEnergyBalance)
+{
+    // thorntonPeakOverlap (the time step's impact stiffness) against the work of the loading
+    // branch: (1/2) m* v^2 = integral of F from 0 to delta_max, by the trapezoid rule on 1e5
+    // intervals (error ~1e-10 relative).
+    const double vy = thorntonYieldSpeed(kModulus, kRadius, kYieldPressure, kMass);
+    for (const double ratio : {0.5, 1.0, 3.0, 30.0, 100.0})
+    {
+        const double v = ratio * vy;
+        const double peak = thorntonPeakOverlap(kModulus, kRadius, kYieldPressure, kMass, v);
+        double work = 0;
+        const int n = 100000;
+        for (int k = 0; k < n; ++k)
+            work += 0.5 * (peak / n) *
+                    (thorntonLoadingForce(kModulus, kRadius, kYieldPressure, peak * k / n) +
+                     thorntonLoadingForce(kModulus, kRadius, kYieldPressure, peak * (k + 1) / n));
+        EXPECT_NEAR(work, 0.5 * kMass * v * v, 1e-8 * kMass * v * v) << "v / v_y = " << ratio;
+    }
+}

@@ -231,7 +231,11 @@ template <class Model, class Lanes, bool kProjected, bool kAll>
 VERIDEM_HOT_INLINE void lawLanesOf(LawBatch& b, std::size_t padded, Real dt, const LawParams* uniform,
                                    unsigned index)
 {
-    if (uniform)
+    // A model with history scalars never reaches the lanes: the force stage runs such scenes one
+    // contact at a time (dem/forces.cpp, dem/wall_forces.cpp), since the batch carries no scalars.
+    if constexpr (historyScalarsOf(Model::normal) > 0)
+        unregisteredContactModel(static_cast<unsigned>(Model::normal));
+    else if (uniform)
         lawLanesWith<Model, Lanes, kProjected, kAll, true>(b, padded, dt, uniform, index);
     else
         lawLanesWith<Model, Lanes, kProjected, kAll, false>(b, padded, dt, uniform, index);

@@ -31,6 +31,10 @@
 namespace veridem::dem
 {
 
+/// The history scalars a Thornton contact carries (its normal model's declaration, dem/materials.h
+/// kNormalModelList): the largest overlap so far, delta_max [m] (ContactHistory::scalars[0]).
+inline constexpr unsigned kThorntonHistoryScalars = 1;
+
 /// The yield point of a Thornton contact: the overlap delta_y [m] and force F_y [N] at which the
 /// largest Hertz pressure reaches p_y.
 struct ThorntonYield
@@ -111,6 +115,20 @@ inline Real thorntonStiffness(Real effectiveModulus, Real effectiveRadius, Real 
     return 2.0 * effectiveModulus * std::sqrt(effectiveRadius * overlap);
 }
 
+/// The largest yield stress p_y [Pa] a material of Young's modulus E [Pa] and Poisson's ratio nu [-]
+/// may have: for a like pair (E* = E / (2 (1 - nu^2))) the yield contact radius a_y = pi p_y R* /
+/// (2 E*) reaches R* at p_y = 2 E* / pi = E / (pi (1 - nu^2)), beyond any small-strain contact.
+inline Real thorntonYieldStressLimit(Real youngsModulus, Real poissonRatio)
+{
+    return youngsModulus / (kPi * (1 - poissonRatio * poissonRatio));
+}
+
+/// The largest overlap delta_max [m] of an impact at speed v [m/s] of a pair of effective mass m*
+/// [kg] (the energy balance above: x = delta_max / delta_y from V = v / v_y; Hertz's
+/// (15 m* v^2 / (16 E* sqrt(R*)))^{2/5} below v_y).
+inline Real thorntonPeakOverlap(Real effectiveModulus, Real effectiveRadius, Real yieldPressure,
+                                Real effectiveMass, Real speed);
+
 /// The impact speed v_y [m/s] at which a pair of effective mass m* [kg] just reaches yield:
 /// (1/2) m* v_y^2 = (2/5) F_y delta_y.
 inline Real thorntonYieldSpeed(Real effectiveModulus, Real effectiveRadius, Real yieldPressure,
@@ -118,6 +136,19 @@ inline Real thorntonYieldSpeed(Real effectiveModulus, Real effectiveRadius, Real
 {
     const ThorntonYield y = thorntonYield(effectiveModulus, effectiveRadius, yieldPressure);
     return std::sqrt(0.8 * y.force * y.overlap / effectiveMass);
+}
+
+inline Real thorntonPeakOverlap(Real effectiveModulus, Real effectiveRadius, Real yieldPressure,
+                                Real effectiveMass, Real speed)
+{
+    const ThorntonYield y = thorntonYield(effectiveModulus, effectiveRadius, yieldPressure);
+    const Real ratio =
+        speed / thorntonYieldSpeed(effectiveModulus, effectiveRadius, yieldPressure, effectiveMass);
+    if (ratio <= 1) // Hertz: delta_max / delta_y = V^{4/5}
+        return y.overlap * std::pow(ratio, 0.8);
+    // (15/8) u^2 + (5/2) u - (V^2 - 1) = 0, u = x - 1 >= 0
+    const Real u = (-2.5 + std::sqrt(6.25 + 7.5 * (ratio * ratio - 1))) / 3.75;
+    return y.overlap * (1 + u);
 }
 
 /// Thornton's coefficient of restitution [-] at impact speed ratio V = v / v_y (his closed form):
