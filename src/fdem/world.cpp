@@ -443,6 +443,15 @@ BodyState World::bodyState(std::uint32_t body) const
     return s;
 }
 
+Vec2 World::prescribedForce(std::uint32_t body) const
+{
+    Vec2 sum{};
+    for (std::size_t n = 0; n < nodes_.size(); ++n)
+        if (nodes_.body[n] == body && nodes_.prescribed[n])
+            sum += nodes_.force[n];
+    return sum;
+}
+
 Energies World::energies() const
 {
     Energies e;

@@ -118,6 +118,11 @@ class World
     const std::string& bodyName(std::uint32_t body) const { return bodyNames_[body]; }
     bool bodyIsFixed(std::uint32_t body) const { return bodyFixed_[body] != 0; }
     BodyState bodyState(std::uint32_t body) const;
+    /// Sum of the last step's forces on the prescribed nodes of `body` [N/m]: weight, elements,
+    /// joints and contacts. Nodes moving at their prescribed constant velocity are unaccelerated, so
+    /// the support's reaction on the body is its negative. Triangles whose three nodes are all
+    /// prescribed add nothing (they are not computed).
+    Vec2 prescribedForce(std::uint32_t body) const;
     Energies energies() const;
     const FrictionDiagnostics& frictionDiagnostics() const { return diagnostics_; }
     std::size_t detections() const { return detections_; }

@@ -16,9 +16,12 @@ namespace veridem::fdem
 
 void World::computeElementForces()
 {
-    // Nodes and triangles that are prescribed at rest get no forces (they would be discarded).
+    // Every node's force starts from its weight each step, the prescribed ones' too: the elements,
+    // joints and contacts next to a node held at rest add to it, and prescribedForce() sums it as the
+    // support's load (not integrated: it was once left to accumulate over the steps). Triangles whose
+    // nodes are all prescribed are skipped (activeTriangles_).
     const Vec2 g = settings_.gravity;
-    for (const auto n : activeNodes_)
+    for (std::size_t n = 0; n < nodes_.size(); ++n)
         nodes_.force[n] = nodes_.mass[n] * g;
     const std::size_t count = activeTriangles_.size();
     elementForce_.resize(count);

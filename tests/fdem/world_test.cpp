@@ -98,6 +98,49 @@ TEST(World, FreeFallFollowsGravityExactly)
     EXPECT_NEAR(st.centroid.x - 0.05, 0.5 * 0.01, 1e-12);
 }
 
+TEST(World, SupportReactionEqualsTheLoadOfAStretchedBar)
+{
+    // A bar L x w (nu = 0, linear law, no viscosity, no gravity) held at x = 0 (nodes at rest) and
+    // pulled at x = L at speed v, every free node started at v x / L: the strain stays uniform,
+    // eps_n = v n dt / L after n steps, and the forces of step n + 1 (at x_n) on each end are the bar's
+    // load sigma w = E (eps + eps^2 / 2) w (T = 2 mu E_xx, E_xx = eps + eps^2 / 2, width unchanged for
+    // nu = 0). The support's load is that of the step, not a sum over the steps.
+    constexpr Real barLength = 0.1, width = 0.02, modulus = 1e9, speed = 1, dt = 1e-7;
+    WorldSettings s;
+    s.timeStep = dt;
+    s.gravity = {0, 0};
+    s.contact.normalPenalty = 1e10;
+    World w(s);
+    const auto m = w.addMaterial({1000, modulus, 0, 0, StressLaw::Linear, PlaneModel::Stress});
+    const auto b = w.addBody({"bar", meshRectangle({0, 0}, {barLength, width}, 5, 2), m, {}, false});
+    ASSERT_EQ(w.prescribeNodes(b, {-1e-9, -1}, {1e-9, 1}, {0, 0}), 3u);
+    ASSERT_EQ(w.prescribeNodes(b, {barLength - 1e-9, -1}, {barLength + 1e-9, 1}, {speed, 0}), 3u);
+    for (std::uint32_t n = 0; n < w.nodes().size(); ++n)
+        w.setNodeVelocity(n, {speed * w.nodes().position[n].x / barLength, 0});
+    constexpr int steps = 100;
+    for (int i = 0; i < steps; ++i)
+        w.step();
+    const Real eps = speed * (steps - 1) * dt / barLength; // the strain the last step's forces saw
+    const Real load = modulus * (eps + 0.5 * eps * eps) * width;
+    Vec2 held{}, pulled{};
+    for (std::uint32_t n = 0; n < w.nodes().size(); ++n)
+    {
+        const Real x = w.nodes().referencePosition[n].x;
+        if (x < 1e-9)
+            held += w.nodes().force[n];
+        else if (x > barLength - 1e-9)
+            pulled += w.nodes().force[n];
+        else // free nodes of a uniform stress field carry no net force
+            EXPECT_LT(length(w.nodes().force[n]), 1e-9 * load);
+    }
+    // Tolerance: eps = 1e-4; the positions gather ~2e-16 m of round-off over the steps against
+    // displacement differences eps h = 2e-6 m across an element: 1e-10 of the load (measured 2e-10).
+    EXPECT_NEAR(held.x, load, 1e-9 * load); // the elements pull the held end towards +x
+    EXPECT_NEAR(pulled.x, -load, 1e-9 * load);
+    EXPECT_NEAR(w.prescribedForce(b).x, 0, 1e-9 * load); // both ends belong to the bar
+    EXPECT_NEAR(held.y, 0, 1e-9 * load);
+}
+
 toml::table parse(const std::string& text)
 {
     return toml::parse(text);
