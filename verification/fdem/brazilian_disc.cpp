@@ -320,8 +320,13 @@ CaseResult brazilianDisc(const CaseContext& context)
               << elastic16.centreAtHalf << " (h = " << elastic16.edge * 1e3 << " mm), "
               << elastic32.centreAtHalf << " (h = " << elastic32.edge * 1e3 << " mm)";
     result.notes.push_back(diagnosis.str());
-    // The elastic field: without joints the centre's stress follows Hondros: the mean over r <= 0.1 R
-    // is ~1 % below the centre's value (hondrosFactor), the load's spread over the flat 1 %, CST error.
+    // The elastic field: without joints the centre's stress should follow Hondros: the mean over
+    // r <= 0.1 R is ~1 % below the centre's value (hondrosFactor), the load's spread over the flat was
+    // budgeted at 1 %, plus the CST error. Measured (docs/fdem.md, "Brazilian disc"): the rigid flat
+    // presses like a punch (its corner nodes carry ~40 % of P), not with Hondros's uniform pressure,
+    // and the frictionless elastic disc converges to ~0.94 of his centre stress as h -> 0; so this
+    // row and the next fail on the reference's load shape, not on the joints (initiation x the elastic
+    // ratio = 1.01 on the two finer meshes). The 1 % budget was set before that was known and is kept.
     result.quantities.push_back(relativeQuantity("elastic disc: centre sigma_yy / Hondros, finest mesh", "",
                                                  1, elastic32.centreAtHalf, 0.03,
                                                  "mean over r <= 0.1 R (1 %), load spread (1 %), CST"));
