@@ -46,33 +46,6 @@ void foldHealth(StepHealth& health, const ContactHealth* chunk, int chunks, std:
     }
 }
 
-/// Per-batch laws of a world with several materials (up to kMaxBatchLawMaterials): entry
-/// a * materials + b is the law of the ordered material pair (a, b), the same lawParams of the same
-/// PairParams that the kernel's per-lane look-up would set, so a batch given one of them computes
-/// the same bits, broadcast instead of looked up and loaded lane by lane.
-constexpr std::uint32_t kMaxBatchLawMaterials = 4;
-struct BatchLaws
-{
-    std::uint32_t materials = 0; // 0: no per-batch laws (one material, or more than the maximum)
-    UniformLaw law[kMaxBatchLawMaterials * kMaxBatchLawMaterials];
-};
-
-BatchLaws batchLaws(const World& world, const UniformLaw* uniform)
-{
-    BatchLaws laws;
-    const std::uint32_t count = world.pairs.count();
-    if (uniform || count > kMaxBatchLawMaterials)
-        return laws;
-    laws.materials = count;
-    for (std::uint32_t a = 0; a < count; ++a)
-        for (std::uint32_t b = 0; b < count; ++b)
-        {
-            const PairParams& pp = world.pairs(a, b);
-            laws.law[a * count + b] = UniformLaw{lawParams(pp), 1u << lawModelIndex(pp)};
-        }
-    return laws;
-}
-
 /// The law of batch `b`'s contacts [0, count) if they all join the same ordered material pair (a
 /// bed of one material struck by a ball of another, DEM8's impact: nearly every batch), else
 /// `uniform` (the world's single law, or null: each lane's pair looked up by the kernel).

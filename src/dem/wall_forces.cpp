@@ -7,7 +7,7 @@
 // general mesh group is matched once at its first slot, matchMeshGroupAt), any walls in lanes
 // (frames once per call), and the scalar path; the same bits from each. Every pass assembles a
 // contact's force and torque with dem/contact_assembly.h and builds its input with
-// dem/contact_input.h.
+// dem/contact_input.h; a batch of one (particle, wall) material pair takes its law broadcast.
 #include "dem/contact_assembly.h"
 #include "dem/contact_frame.h"
 #include "dem/contact_input.h"
@@ -118,6 +118,7 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
     const bool loads = list.recordLoads;
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
+    const BatchLaws perBatch = batchLaws(world, uniform);
     std::optional<WallContactList::MeshGroup> group; // (made on the first mesh slot only)
     const WallLaw kernel = exec::isAvx2() ? wallLawAvx2 : wallLawPortable;
     std::vector<WallFrame> frames(world.walls.size());
@@ -129,11 +130,13 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
                      wallActive(wall), plane ? planeGeometry(*plane, wall.displacement) : PlaneGeometry{}};
     }
     LawBatch b;
+    std::uint32_t particleMaterial[kBatch], wallMaterial[kBatch]; // of each contact (lawOfContacts)
     std::size_t m = 0;
     const auto run = [&]
     {
-        finishBatchLaws(b, uniform);
-        kernel(b, m, dt, uniform ? &uniform->params : nullptr);
+        const UniformLaw* const law =
+            lawOfContacts(world, perBatch, uniform, b, m, particleMaterial, wallMaterial);
+        kernel(b, m, dt, law ? &law->params : nullptr);
         for (std::size_t q = 0; q < m; ++q)
         {
             const std::uint32_t i = b.particle[q];
@@ -176,8 +179,8 @@ ContactHealth wallForcesInLanes(World& world, Real dt, std::size_t begin, std::s
         const Wall& wall = world.walls[w];
         const ContactInput in = wallContactInput(particleState(p, i), frame.motion, gap, dt);
         b.setInputs(m, k, i, in.normal, in.overlap, in.relativeVelocity, in.effectiveMass, history.spring[k]);
-        if (!uniform)
-            addContactLaw(b, m, world.pairs(p.material[i], wall.material));
+        particleMaterial[m] = p.material[i];
+        wallMaterial[m] = wall.material;
         if (!uniform || uniform->models != 1u) // (as wallContactScalar)
             b.setRollingInputs(m, in, history.keepRolling ? history.rolling[k] : Vec3{});
         if (++m == kBatch)
@@ -274,6 +277,7 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     ContactHealth health{0, 0, false, 0};
     const std::optional<UniformLaw> single = uniformLaw(world);
     const UniformLaw* const uniform = single ? &*single : nullptr;
+    const BatchLaws perBatch = batchLaws(world, uniform);
     const bool extraInputs = !uniform || uniform->models != 1u; // some model beyond the linear law's
     const Vec3* const position = p.position.data();
     const Vec3* const velocity = p.velocity.data();
@@ -292,18 +296,20 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
     if constexpr (kMeshes)
         group.emplace();
     LawBatch b;
+    std::uint32_t particleMaterial[kBatch], wallMaterial[kBatch]; // of each contact (lawOfContacts)
     std::size_t m = 0;
     // (Inlined: a lambda's own function would not have the caller's instruction set.)
     const auto run = [&]() __attribute__((always_inline))
     {
-        finishBatchLaws(b, uniform);
+        const UniformLaw* const law =
+            lawOfContacts(world, perBatch, uniform, b, m, particleMaterial, wallMaterial);
         if (extraInputs)
             planeExtraInputs(world, frames, b, m);
         // (The law in its own function: inlined here, its register pressure spilled this loop.)
         if constexpr (kWidth<Lanes> == 4)
-            wallLawAvx2(b, m, dt, uniform ? &uniform->params : nullptr);
+            wallLawAvx2(b, m, dt, law ? &law->params : nullptr);
         else
-            wallLawPortable(b, m, dt, uniform ? &uniform->params : nullptr);
+            wallLawPortable(b, m, dt, law ? &law->params : nullptr);
         for (std::size_t q = 0; q < m; ++q)
         {
             const std::uint32_t i = b.particle[q];
@@ -344,8 +350,8 @@ VERIDEM_HOT_INLINE ContactHealth planeWallForcesBody(World& world, Real dt, std:
         const ContactFrameOf<Real> contact = wallContactFrame(gap.normal, gap.overlap, x, velocity[i],
                                                               angularVelocity[i], r, frame.motion, halfStep);
         b.setInputs(m, k, i, gap.normal, gap.overlap, contact.relativeVelocity, mass[i], spring[k]);
-        if (!uniform)
-            addContactLaw(b, m, world.pairs(p.material[i], frame.material));
+        particleMaterial[m] = p.material[i];
+        wallMaterial[m] = frame.material;
         if (++m == kBatch)
             run();
     };

@@ -329,4 +329,58 @@ inline std::optional<UniformLaw> uniformLaw(const World& world)
     return UniformLaw{lawParams(p), 1u << lawModelIndex(p)};
 }
 
+/// Per-batch laws of a world with several materials (up to kMaxBatchLawMaterials): entry
+/// a * materials + b is the law of the ordered material pair (a, b), the same lawParams of the same
+/// PairParams that the per-lane look-up (addContactLaw, LawBatch::law) would set, so a batch given
+/// one of them computes the same bits, broadcast instead of looked up and loaded lane by lane. Pairs
+/// (dem/forces.cpp) and walls (dem/wall_forces.cpp: the particle's and the wall's material) use it.
+inline constexpr std::uint32_t kMaxBatchLawMaterials = 4;
+struct BatchLaws
+{
+    std::uint32_t materials = 0; // 0: no per-batch laws (one material, or more than the maximum)
+    UniformLaw law[kMaxBatchLawMaterials * kMaxBatchLawMaterials];
+};
+
+/// The per-batch laws of `world` (none if it has a single law, `uniform`, or too many materials).
+inline BatchLaws batchLaws(const World& world, const UniformLaw* uniform)
+{
+    BatchLaws laws;
+    const std::uint32_t count = world.pairs.count();
+    if (uniform || count > kMaxBatchLawMaterials)
+        return laws;
+    laws.materials = count;
+    for (std::uint32_t a = 0; a < count; ++a)
+        for (std::uint32_t b = 0; b < count; ++b)
+        {
+            const PairParams& pp = world.pairs(a, b);
+            laws.law[a * count + b] = UniformLaw{lawParams(pp), 1u << lawModelIndex(pp)};
+        }
+    return laws;
+}
+
+/// The law of the contacts [0, count) of `b`, contact m joining the materials first[m] and
+/// second[m] (in that order): `uniform` if the world has one; the per-batch law of their ordered
+/// pair if they all join the same one (a bed of one material on a steel wall: nearly every batch);
+/// else null, after setting each contact's law in `b` (addContactLaw) for the per-lane look-up.
+/// Sets b's model flags for the law (finishBatchLaws).
+VERIDEM_HOT_INLINE const UniformLaw* lawOfContacts(const World& world, const BatchLaws& laws,
+                                                   const UniformLaw* uniform, LawBatch& b, std::size_t count,
+                                                   const std::uint32_t* first, const std::uint32_t* second)
+{
+    const UniformLaw* law = uniform;
+    if (!law && laws.materials != 0)
+    {
+        bool one = true;
+        for (std::size_t m = 1; m < count; ++m)
+            one = one && first[m] == first[0] && second[m] == second[0];
+        if (one)
+            law = &laws.law[first[0] * laws.materials + second[0]];
+    }
+    if (!law)
+        for (std::size_t m = 0; m < count; ++m)
+            addContactLaw(b, m, world.pairs(first[m], second[m]));
+    finishBatchLaws(b, law);
+    return law;
+}
+
 } // namespace veridem::dem::batch
