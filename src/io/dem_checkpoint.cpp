@@ -1,3 +1,5 @@
+// (Above 500 lines: the writer and the reader of each record sit in one file, so that the order
+// written and the order read can be compared line by line; a split would separate the two.)
 #include "io/dem_checkpoint.h"
 
 #include "io/bond_checkpoint.h"

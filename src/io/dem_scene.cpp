@@ -1,3 +1,6 @@
+// (Above 500 lines: the scene's top-level reading and each model's material keys are still here
+// side by side; the model keys are to move to the models' own declarations, which will take them
+// out of this file.)
 #include "io/dem_scene.h"
 
 #include "core/constants.h"
