@@ -209,7 +209,10 @@ std::uint64_t Simulation::advance(std::uint64_t steps, StopReason* reason,
         if (s % st.outputEvery == 0 || s == st.totalSteps)
             st.recordOutputs();
         if (st.checkpointEvery && (s % st.checkpointEvery == 0 || s == st.totalSteps))
+        {
             st.writeCheckpoint(checkpointPath());
+            st.ownCheckpointStep = s;
+        }
         if (agreed[1] != 0 && s < end)
         {
             why = StopReason::Interrupted;
@@ -241,6 +244,11 @@ void Simulation::writeCheckpoint(const std::filesystem::path& path)
 void Simulation::writeCheckpoint()
 {
     s_->writeCheckpoint(checkpointPath());
+    s_->ownCheckpointStep = step();
+}
+bool Simulation::checkpointIsCurrent() const
+{
+    return s_->ownCheckpointStep && *s_->ownCheckpointStep == step();
 }
 void Simulation::close()
 {
@@ -256,6 +264,7 @@ void Simulation::restore(const std::filesystem::path& path)
     dem::ParticleStore& p = world.particles;
     p.externalForce.clear(); // (not in checkpoints: set again after a restore)
     p.externalTorque.clear();
+    st.ownCheckpointStep.reset();
     const io::CheckpointOutputs saved =
         io::readDemCheckpoint(path, world, st.hash, st.ledgerState(), &st.scene.flow);
     if (st.recorder && saved.fileBytes.size() == st.outputFiles() &&

@@ -120,6 +120,10 @@ class Simulation
     /// Writes DIR/checkpoint.bin (the scene's own checkpoint path). Collective.
     void writeCheckpoint();
     std::filesystem::path checkpointPath() const;
+    /// True if checkpointPath() holds the present step's state (written by advance()'s schedule or
+    /// by writeCheckpoint() at this step, nothing restored since): a run stopping here need not
+    /// write it again.
+    bool checkpointIsCurrent() const;
     /// Restores a checkpoint written by this scene (the same table: comments and layout aside).
     /// The outputs continue after it only if it came from this Simulation's output directory.
     void restore(const std::filesystem::path& path);

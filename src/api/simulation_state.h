@@ -58,6 +58,9 @@ struct Simulation::State
     std::optional<io::ZoneRecorder> zones;
     std::optional<io::TrackRecorder> tracked;
     bool closed = false;
+    // The step at which checkpointPath() was last written, by advance()'s schedule or by
+    // writeCheckpoint() (none since the start or a restore)
+    std::optional<std::uint64_t> ownCheckpointStep;
 
     dem::World& world() { return scene.world; }
     bool files() const { return !options.outDir.empty(); }

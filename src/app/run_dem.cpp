@@ -62,8 +62,8 @@ int runDemScene(const toml::table& table, const RunOptions& options)
         if ((signal && sim.step() < totalSteps) ||
             (options.stopAtStep && sim.step() == *options.stopAtStep && sim.step() < totalSteps))
         {
-            // (a checkpoint due at this very step was written by advance() already: the same file)
-            sim.writeCheckpoint();
+            if (!sim.checkpointIsCurrent()) // (one due at this very step was written by advance())
+                sim.writeCheckpoint();
             sim.close();
             if (!root)
                 return signal ? io::kInterruptedBase + signal : 0;

@@ -253,6 +253,8 @@ PYBIND11_MODULE(_veridem, m)
         .def_property_readonly("time", [](PySimulation& s) { return s.sim().time(); })
         .def_property_readonly("step_count", [](PySimulation& s) { return s.sim().step(); })
         .def_property_readonly("end_step", [](PySimulation& s) { return s.sim().lastStep(); })
+        .def_property_readonly("checkpoint_is_current",
+                               [](PySimulation& s) { return s.sim().checkpointIsCurrent(); })
         .def_property_readonly("output_interval", [](PySimulation& s) { return s.sim().outputInterval(); })
         .def_property_readonly("particle_count",
                                [](PySimulation& s) { return s.sim().world().particles.size(); })

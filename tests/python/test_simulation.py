@@ -263,6 +263,24 @@ def test_checkpoint_round_trip(tmp_path):
     assert np.array_equal(again.particles.position, after)
 
 
+def test_checkpoint_is_current_only_at_the_step_written(tmp_path):
+    # checkpoint_interval 0.004 s at dt 2e-5 s: advance() writes OUT/checkpoint.bin every 200 steps.
+    scene = box_fill()
+    scene["simulation"]["checkpoint_interval"] = 0.004
+    sim = make(scene, out=str(tmp_path / "out"))
+    assert not sim.checkpoint_is_current
+    sim.step(200)
+    assert sim.checkpoint_is_current  # written by the schedule at this step
+    sim.step(1)
+    assert not sim.checkpoint_is_current
+    sim.checkpoint()  # the scene's own path, now
+    assert sim.checkpoint_is_current
+    sim.checkpoint(tmp_path / "elsewhere.bin")  # another path leaves the own one as it was
+    assert sim.checkpoint_is_current
+    sim.restore(tmp_path / "elsewhere.bin")
+    assert not sim.checkpoint_is_current
+
+
 def test_ctrl_c_interrupts_a_run():
     sim = make(box_fill(duration=100.0))
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))

@@ -202,6 +202,12 @@ class Simulation:
         restart=path) or restore() continues with the same bits."""
         self._sim.checkpoint(None if path is None else os.fspath(path))
 
+    @property
+    def checkpoint_is_current(self):
+        """True if OUT/checkpoint.bin holds the present step (written by the scene's schedule or by
+        checkpoint() at this step, no restore() since)."""
+        return self._sim.checkpoint_is_current
+
     def restore(self, path):
         """Returns this scene to a checkpoint's state (written by the same scene)."""
         self._sim.restore(os.fspath(path))
