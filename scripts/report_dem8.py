@@ -21,6 +21,10 @@ Files read (all optional; a missing one leaves its part out and says so):
                                                code: veridem, liggghts): t,retained, t from the gate's
                                                opening [s]; the discharge rate is fitted here
                                                (discharge_rate)
+  <date>-<machine>-dem8-drum-<code>.csv       a drum run (code: veridem, liggghts): t,zone,material,count
+                                               (veridem's zones.csv columns; run_drum.sh writes
+                                               LIGGGHTS' in them); the table gives each code's counts
+                                               at each time both codes reached
   <date>-<machine>-dem8-speed.csv              the speed table: case,pair,code,setup,cores,particles,
                                                steps,wall_s,particle_steps_per_s,date,machine (the rows
                                                of one pair were timed in turn in the same minutes)
@@ -248,6 +252,34 @@ def silo_table(w, results_dir):
       "slope's standard error (scripts/report_dem8.py, discharge_rate).</p>")
 
 
+def drum_table(w, results_dir):
+    """The drum's zone counts of each code whose results file is here, at the times all reached."""
+    runs = {}
+    for code in ("veridem", "LIGGGHTS"):
+        hit = latest(results_dir, f"drum-{code.lower()}")
+        if hit:
+            counts = {}
+            with open(hit[0]) as stream:
+                for row in csv.DictReader(stream):
+                    counts[(round(float(row["t"]), 6), row["zone"], row["material"])] = int(row["count"])
+            runs[code] = (counts, hit)
+    if not runs:
+        w("<p class='why'>No drum results yet (bench/results/*-dem8-drum-CODE.csv): the 5 s run, 6.25e6 steps of "
+          "38,000 spheres, is about 6 h on 2 threads of this machine (bench/dem8/README.md).</p>")
+        return
+    times = sorted(set.intersection(*[{k[0] for k in counts} for counts, _ in runs.values()]))
+    keys = [("zone1", "M1"), ("zone1", "M2"), ("zone2", "M1"), ("zone2", "M2")]
+    w("<table class='summary'><tr><th>t (s)</th><th>code</th>" +
+      "".join(f"<th>{m} in {z}</th>" for z, m in keys) + "<th>made</th></tr>")
+    for t in times:
+        for code, (counts, (_, date, machine)) in runs.items():
+            w(f"<tr><td class='num'>{t:g}</td><td>{code}</td>" +
+              "".join(f"<td class='num'>{counts.get((t, z, m), '–')}</td>" for z, m in keys) +
+              f"<td class='why'>{date}, {html.escape(machine)}</td></tr>")
+    w("</table><p class='why'>Particle centres in zone 1 (x &gt; 0, z &gt; 0) and zone 2 (x &lt; 0, z &lt; 0), at the "
+      "times both runs reached.</p>")
+
+
 def speed_table(w, root, results_dir):
     found = latest(results_dir, "speed")
     if not found:
@@ -302,6 +334,8 @@ def dem8_section(out_dir, root):
               "The ball's centre height every 0.5 ms. The peers start on the ball's free-flight parabola at "
               f"{starts[bed]}.</figcaption></figure>")
         impact_table(w, curves_of_bed, top)
+    w("<h3>Rotating drum</h3>")
+    drum_table(w, results_dir)
     w("<h3>Silo discharge</h3>")
     silo_table(w, results_dir)
     w("<h3>Speed</h3>")

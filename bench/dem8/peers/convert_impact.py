@@ -84,6 +84,19 @@ def read_triangles(path):
     return triangles
 
 
+def write_stl(path, name, triangles):
+    """ASCII STL of read_triangles()' triangles (unit normals from the vertex order)."""
+    with open(path, "w") as stl:
+        stl.write(f"solid {name}\n")
+        for a, b, c, n in triangles:
+            length = math.sqrt(sum(x * x for x in n))
+            stl.write(f"facet normal {n[0] / length:.9g} {n[1] / length:.9g} {n[2] / length:.9g}\n outer loop\n")
+            for v in (a, b, c):
+                stl.write(f"  vertex {v[0]:.12g} {v[1]:.12g} {v[2]:.12g}\n")
+            stl.write(" endloop\nendfacet\n")
+        stl.write(f"endsolid {name}\n")
+
+
 def main():
     if len(sys.argv) != 4:
         sys.exit("usage: convert_impact.py PARTICLES WALLS OUTDIR")
@@ -104,15 +117,7 @@ def main():
         data.write("\nAtoms\n\n")
         for atom_id, (x, y, z, r, kind) in enumerate(spheres, start=1):
             data.write(f"{atom_id} {kind} {2 * r:.9g} {DENSITY[kind]:.9g} {x:.12g} {y:.12g} {z:.12g}\n")
-    with open(os.path.join(out, "walls.stl"), "w") as stl:
-        stl.write("solid dem8_impact_box\n")
-        for a, b, c, n in triangles:
-            length = math.sqrt(sum(x * x for x in n))
-            stl.write(f"facet normal {n[0] / length:.9g} {n[1] / length:.9g} {n[2] / length:.9g}\n outer loop\n")
-            for v in (a, b, c):
-                stl.write(f"  vertex {v[0]:.12g} {v[1]:.12g} {v[2]:.12g}\n")
-            stl.write(" endloop\nendfacet\n")
-        stl.write("endsolid dem8_impact_box\n")
+    write_stl(os.path.join(out, "walls.stl"), "dem8_impact_box", triangles)
     with open(os.path.join(out, "spheres.txt"), "w") as text:
         for x, y, z, r, kind in spheres:
             text.write(f"{x:.12g} {y:.12g} {z:.12g} {r:.9g} {kind}\n")
