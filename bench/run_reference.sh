@@ -32,6 +32,14 @@ build=${1:-$root/build/release}
 steps=${2:-10000}
 shared=${VERIDEM_SHARED_BENCH_DIR:-$root/../shared/bench}
 bench="$build/bench/veridem_bench"
+# scripts/test (CI) links the benchmarks without link-time optimisation (VERIDEM_LTO_BENCH=OFF):
+# not the build these figures are for.
+if grep -q '^VERIDEM_LTO_BENCH:BOOL=OFF' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "bench/run_reference.sh: $build links the benchmarks without link-time optimisation" \
+    "(VERIDEM_LTO_BENCH=OFF, as scripts/test builds it); run cmake --preset release &&" \
+    "cmake --build --preset release first" >&2
+  exit 2
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

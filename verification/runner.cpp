@@ -182,7 +182,7 @@ int runCases(const RunRequest& request)
         const auto start = std::chrono::steady_clock::now();
         try
         {
-            o.result = runWithSweep(*chosen[k], context);
+            o.result = request.dtSweep ? runWithSweep(*chosen[k], context) : chosen[k]->run(context);
         }
         catch (const std::exception& e)
         {

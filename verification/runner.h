@@ -19,6 +19,9 @@ struct RunRequest
     std::optional<std::string> seriesDir; // write <dir>/<case>/<series>.csv
     bool showProgress = true;
     int jobs = 0; // cases run at once, on threads of their own (0: one per core)
+    /// false (`--no-dt-sweep`): each case runs at its dt only, without the runs at dt/2 and dt/4
+    /// and their observed orders (the sanitizer build's verify_quick: the same code at smaller dt).
+    bool dtSweep = true;
     /// Under `mpirun -np N veridem verify` (N > 1): the ranks. Only the cases labelled "ranks"
     /// run (a case named with `--case` that is not one is refused), one at a time on the calling
     /// thread (the collectives of every rank in one order), their worlds stepped over the ranks

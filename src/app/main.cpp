@@ -195,6 +195,9 @@ int main(int argc, char** argv)
     verify->add_option("--json", jsonPath, "also write the results as JSON");
     verify->add_option("--report", reportDir, "write an HTML report with figures to this directory");
     verify->add_flag("--quiet", quiet, "no progress output");
+    bool noDtSweep = false;
+    verify->add_flag("--no-dt-sweep", noDtSweep,
+                     "run each case at its dt only: no dt/2 and dt/4 runs, no observed orders");
     verify
         ->add_option("--jobs", verifyRequest.jobs,
                      "cases run at once, each on a thread of its own (default: one per core)")
@@ -249,6 +252,7 @@ int main(int argc, char** argv)
             }
         }
         verifyRequest.showProgress = !quiet;
+        verifyRequest.dtSweep = !noDtSweep;
         if (!jsonPath.empty())
             verifyRequest.jsonPath = jsonPath;
         if (!reportDir.empty())

@@ -1,5 +1,6 @@
 # tests/distributed/CMakeLists.txt: the mpi_run_* tests. -DVERIDEM, -DMPIEXEC, -DSCENE, -DSTOP (the step a
-# run stops at, to be continued on another rank count), -DCOMPARE, -DWORK.
+# run stops at, to be continued on another rank count), -DCOMPARE, -DWORK; -DSTRAIGHT_FOUR=OFF leaves
+# out the straight run on 4 ranks (the sanitizer build: tests/distributed/CMakeLists.txt says why).
 file(REMOVE_RECURSE ${WORK})
 function(run name)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -13,9 +14,13 @@ set(np2 ${MPIEXEC} -np 2 ${VERIDEM} run ${SCENE} --quiet --threads 1)
 set(np4 ${MPIEXEC} -np 4 ${VERIDEM} run ${SCENE} --quiet --threads 1)
 run("straight, 1 process" ${np1} --out ${WORK}/single)
 run("straight, 2 ranks" ${np2} --out ${WORK}/two)
-run("straight, 4 ranks" ${np4} --out ${WORK}/four)
+set(compared ${WORK}/single ${WORK}/two)
+if(NOT DEFINED STRAIGHT_FOUR OR STRAIGHT_FOUR)
+  run("straight, 4 ranks" ${np4} --out ${WORK}/four)
+  list(APPEND compared ${WORK}/four)
+endif()
 run("2 ranks to step ${STOP}" ${np2} --out ${WORK}/two_one --stop-at-step ${STOP})
 run("then 1 process" ${np1} --out ${WORK}/two_one --restart ${WORK}/two_one/checkpoint.bin)
 run("1 process to step ${STOP}" ${np1} --out ${WORK}/one_four --stop-at-step ${STOP})
 run("then 4 ranks" ${np4} --out ${WORK}/one_four --restart ${WORK}/one_four/checkpoint.bin)
-run("compare" python3 ${COMPARE} ${WORK}/single ${WORK}/two ${WORK}/four ${WORK}/two_one ${WORK}/one_four)
+run("compare" python3 ${COMPARE} ${compared} ${WORK}/two_one ${WORK}/one_four)
