@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -60,36 +61,39 @@ std::string numberText(Real value)
     return s.str();
 }
 
-/// Reads declared parameter p of material m (whose earlier parameters are read).
-void readParam(TableReader& t, dem::Material& m, const dem::ModelParam& p, dem::NormalModel normal,
-               dem::RollingModel rolling)
+/// Reads declared parameter p of material m (whose earlier parameters are read); returns the
+/// message for p if it is required and missing (given after finish(), which names a typo first).
+std::string readParam(TableReader& t, dem::Material& m, const dem::ModelParam& p, dem::NormalModel normal,
+                      dem::RollingModel rolling)
 {
     const std::string of = "material '" + m.name + "'";
     if (!dem::readsParam(p, normal, rolling))
     {
         if (t.has(p.key))
-            t.fail(p.key, "is not read by " + choiceText(p.family, normal, rolling) + " (it reads: " +
-                              keysRead(p.family, normal, rolling) + "; " + of + ")");
-        return;
+            t.fail(p.key, "is not read by " + choiceText(p.family, normal, rolling) +
+                              " (it reads: " + keysRead(p.family, normal, rolling) + "; " + of + ")");
+        return "";
     }
     if (p.flag)
     {
         m.*p.flag = t.boolean(p.key, p.defaultValue != 0);
-        return;
+        return "";
     }
     const Real limit = p.upperLimit ? p.upperLimit(m) : std::numeric_limits<Real>::infinity();
-    if (!t.has(p.key))
+    const std::optional<Real> value = t.optionalNumber(p.key);
+    if (!value)
     {
-        if (dem::requiresParam(p, normal, rolling))
-            t.fail(p.key, "is required by " + choiceText(p.family, normal, rolling) + ": give a value " +
-                              dem::rangeText(p, limit) + " (" + of + ")");
         m.*p.field = p.defaultValue;
-        return;
+        if (dem::requiresParam(p, normal, rolling))
+            return "is required by " + choiceText(p.family, normal, rolling) + ": give a value " +
+                   dem::rangeText(p, limit) + " (" + of + ")";
+        return "";
     }
-    const Real value = t.requiredNumber(p.key);
-    if (!dem::inRange(p, value, limit))
-        t.fail(p.key, "must be " + dem::rangeText(p, limit) + " (got " + numberText(value) + "; " + of + ")");
-    m.*p.field = value;
+    if (!dem::inRange(p, *value, limit))
+        t.fail(p.key,
+               "must be " + dem::rangeText(p, limit) + " (got " + numberText(*value) + "; " + of + ")");
+    m.*p.field = *value;
+    return "";
 }
 
 /// A declared key's partner that cannot be > 0 with it (exclusiveWith), reported once.
@@ -121,13 +125,21 @@ dem::Material readMaterial(TableReader& t)
     const dem::RollingModel rolling =
         listedModel(dem::kRollingModelList,
                     t.choice("rolling_model", "constant_torque", listedNames(dem::kRollingModelList)));
+    const dem::ModelParam* missing = nullptr; // (the first required key not given)
+    std::string missingMessage;
     for (const dem::ModelParam& p : dem::kModelParams)
-        readParam(t, m, p, m.normalModel, rolling);
+        if (std::string message = readParam(t, m, p, m.normalModel, rolling); !message.empty() && !missing)
+        {
+            missing = &p;
+            missingMessage = std::move(message);
+        }
+    t.finish(); // (an unknown key first: it may be the missing one misspelt)
+    if (missing)
+        t.fail(missing->key, missingMessage);
     checkExclusive(t, m);
     // A friction-capped rolling model given no rolling friction resists nothing: none.
     const bool anyRolling = m.rollingFrictionLength > 0 || m.rollingFrictionDimensionless > 0;
     m.rollingModel = rolling != dem::RollingModel::Viscous && !anyRolling ? dem::RollingModel::None : rolling;
-    t.finish();
     return m;
 }
 

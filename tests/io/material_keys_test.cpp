@@ -222,6 +222,10 @@ TEST(MaterialKeys, MissingOrOutOfRangeValueNamesTheMaterialAndTheRange)
                 "'rolling_viscous_coefficient' is required by rolling_model = \"viscous\": give a value > 0 "
                 "s/m"),
         std::string::npos);
+    // A required key misspelt is named as the unknown key, with the one meant.
+    EXPECT_NE(errorOf(kSimulation + material("a", "kn_ = 1e3\n") + kSphere)
+                  .find("unknown key 'kn_' (did you mean 'kn'?)"),
+              std::string::npos);
     EXPECT_NE(errorOf(kSimulation + material("a", "kn = 1e3\nfriction = -0.1\n") + kSphere)
                   .find("'friction' must be >= 0 (got -0.1; material 'a')"),
               std::string::npos);
