@@ -1,12 +1,14 @@
 #include "dem/materials.h"
 
 #include "core/error.h"
+#include "dem/model_params.h"
 #include "dem/models/normal.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace veridem::dem
@@ -34,49 +36,33 @@ Real seriesStiffness(Real a, Real b)
 
 void validateMaterial(const Material& m)
 {
-    std::ostringstream s;
     if (!(m.density > 0))
         bad(m, "density must be > 0 kg/m^3");
-    if (!(m.restitution > 0 && m.restitution <= 1))
-        bad(m, "restitution e must be in (0, 1]");
-    if (!(m.friction >= 0))
-        bad(m, "friction mu must be >= 0");
-    if (!(m.rollingFrictionLength >= 0) || !(m.rollingFrictionDimensionless >= 0))
-        bad(m, "rolling friction must be >= 0");
-    if (!(m.rollingViscousCoefficient >= 0))
-        bad(m, "rolling viscous coefficient must be >= 0 s/m");
+    // Every declared parameter the material's models read, and every one given a value other than
+    // its default, in its declared range (a parameter without a default, kAbsent, is absent < 0).
+    for (const ModelParam& p : kModelParams)
+    {
+        if (p.flag)
+            continue;
+        const Real value = m.*p.field;
+        const bool reads = readsParam(p, m.normalModel, m.rollingModel);
+        if ((!reads && value == p.defaultValue) || (p.defaultValue == kAbsent && value < 0))
+            continue;
+        const Real limit = reads && p.upperLimit ? p.upperLimit(m) : std::numeric_limits<Real>::infinity();
+        if (!inRange(p, value, limit))
+        {
+            std::ostringstream s;
+            s << "'" << p.key << "' = " << value << " must be " << rangeText(p, limit);
+            bad(m, s.str());
+        }
+    }
     if (m.rollingFrictionLength > 0 && m.rollingFrictionDimensionless > 0)
         bad(m, "give rolling friction either as a length (m) or dimensionless, not both");
-    if (m.normalModel == NormalModel::Linear)
-    {
-        if (!(m.normalStiffness > 0))
-            bad(m, "normal stiffness kn must be > 0 N/m");
-        if (!(m.tangentialStiffnessRatio >= 0))
-            bad(m, "kt/kn must be >= 0");
-    }
-    else
-    {
-        if (!(m.youngsModulus > 0))
-            bad(m, "Young's modulus must be > 0 Pa for the Hertz, JKR and DMT models");
-        if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
-            bad(m, "Poisson's ratio must be in (-1, 0.5)");
-    }
-    if (!(m.surfaceEnergy >= 0) || !std::isfinite(m.surfaceEnergy))
-        bad(m, "surface energy must be finite and >= 0 J/m^2");
     if (m.surfaceEnergy > 0 && !isAdhesive(m.normalModel))
         bad(m, "surface energy is read only by the \"jkr\" and \"dmt\" models");
-    if (m.normalModel == NormalModel::Thornton)
-    {
-        if (!(m.yieldStress > 0))
-            bad(m, "yield stress must be > 0 Pa for the \"thornton\" model");
-        const Real limit = thorntonYieldStressLimit(m.youngsModulus, m.poissonRatio);
-        if (!(m.yieldStress < limit))
-            bad(m, "yield stress must be below E / (pi (1 - nu^2)) = " + std::to_string(limit) +
-                       " Pa: at that pressure a like pair would yield only at a contact radius of R*");
-        if (m.normalDampingRate >= 0)
-            bad(m, "the \"thornton\" model has no viscous damping (its energy is lost to plastic flow)");
-    }
-    else if (m.yieldStress != 0)
+    if (m.normalModel == NormalModel::Thornton && m.normalDampingRate >= 0)
+        bad(m, "the \"thornton\" model has no viscous damping (its energy is lost to plastic flow)");
+    if (m.normalModel != NormalModel::Thornton && m.yieldStress != 0)
         bad(m, "yield stress is read only by the \"thornton\" model");
 }
 
@@ -94,8 +80,35 @@ PairParams mixMaterials(const Material& a, const Material& b)
         throw InputError("materials '" + a.name + "' and '" + b.name +
                          "' use different normal models; give them the same model");
     p.normalModel = a.normalModel;
-    p.kn = seriesStiffness(a.normalStiffness, b.normalStiffness);
-    p.ktRatio = 0.5 * (a.tangentialStiffnessRatio + b.tangentialStiffnessRatio);
+    // The declared parameters with a rule of their own (dem/model_params.h).
+    for (const ModelParam& param : kModelParams)
+    {
+        if (param.pairFlag)
+            p.*param.pairFlag = a.*param.flag && b.*param.flag; // (Mixing::Both)
+        if (!param.pair)
+            continue;
+        const Real x = a.*param.field, y = b.*param.field;
+        switch (param.mixing)
+        {
+        case Mixing::Series:
+            p.*param.pair = seriesStiffness(x, y);
+            break;
+        case Mixing::Mean:
+            p.*param.pair = 0.5 * (x + y);
+            break;
+        case Mixing::Smaller:
+            p.*param.pair = std::min(x, y);
+            break;
+        case Mixing::WorkOfAdhesion:
+            p.*param.pair = 2.0 * std::sqrt(x * y);
+            break;
+        case Mixing::Both:
+        case Mixing::Derived:
+            break;
+        }
+    }
+    // Derived: Hertz's E* and G* from E and nu, the damping from e or gamma_n, and the rolling
+    // model (the first material's unless it has none).
     if (isHertzian(p.normalModel))
     {
         p.effectiveModulus = 1.0 / ((1 - a.poissonRatio * a.poissonRatio) / a.youngsModulus +
@@ -103,16 +116,10 @@ PairParams mixMaterials(const Material& a, const Material& b)
         const Real ga = a.youngsModulus / (2 * (1 + a.poissonRatio));
         const Real gb = b.youngsModulus / (2 * (1 + b.poissonRatio));
         p.effectiveShearModulus = 1.0 / ((2 - a.poissonRatio) / ga + (2 - b.poissonRatio) / gb);
-        p.workOfAdhesion = 2.0 * std::sqrt(a.surfaceEnergy * b.surfaceEnergy);
     }
     const Real e = 0.5 * (a.restitution + b.restitution);
     p.dampingRatio = dampingRatioFromRestitution(e);
-    p.hertzBeta = hertzBetaFromRestitution(p.normalModel, e);
-    if (p.normalModel == NormalModel::Thornton) // (no dashpot: beta = 0)
-    {
-        p.hertzBeta = 0;
-        p.yieldPressure = std::min(a.yieldStress, b.yieldStress);
-    }
+    p.hertzBeta = p.normalModel == NormalModel::Thornton ? 0 : hertzBetaFromRestitution(p.normalModel, e);
     if (a.normalDampingRate >= 0 || b.normalDampingRate >= 0)
         p.dampingRate = 0.5 * (std::fmax(a.normalDampingRate, 0) + std::fmax(b.normalDampingRate, 0));
     const Real ratioA = a.tangentialDampingRatio, ratioB = b.tangentialDampingRatio;
@@ -120,13 +127,7 @@ PairParams mixMaterials(const Material& a, const Material& b)
         p.tangentialDampingRatio = 0.5 * (ratioA + ratioB);
     else
         p.tangentialDampingRatio = std::sqrt((2.0 / 7.0) * p.ktRatio);
-    p.mu = 0.5 * (a.friction + b.friction);
     p.rollingModel = a.rollingModel != RollingModel::None ? a.rollingModel : b.rollingModel;
-    p.rollingLength = 0.5 * (a.rollingFrictionLength + b.rollingFrictionLength);
-    p.rollingDimensionless = 0.5 * (a.rollingFrictionDimensionless + b.rollingFrictionDimensionless);
-    p.rollingDampingRatio = 0.5 * (a.rollingDampingRatio + b.rollingDampingRatio);
-    p.rollingViscous = 0.5 * (a.rollingViscousCoefficient + b.rollingViscousCoefficient);
-    p.rollingTwist = a.rollingTwist && b.rollingTwist;
     return p;
 }
 

@@ -1,7 +1,8 @@
 // Materials and the pair-parameter table. Materials are mixed once, at set-up, into a table
 // indexed by (material a, material b); the force loops only read that table.
 //
-// Mixing rules (documented in docs/models.md):
+// Mixing rules (each parameter's is declared in dem/model_params.h, ModelParam::mixing, and applied
+// by mixMaterials; docs/models.md):
 //   linear stiffness kn, kt: series springs, k = 2 k1 k2 / (k1 + k2)  (= k for equal materials)
 //   Hertz: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2,  1/G* = (2-nu1)/G1 + (2-nu2)/G2
 //   restitution e, friction mu, rolling friction: arithmetic mean (a [[pair]] scene entry overrides)

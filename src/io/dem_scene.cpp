@@ -1,15 +1,12 @@
-// (Above 500 lines: the scene's top-level reading and each model's material keys are still here
-// side by side; the model keys are to move to the models' own declarations, which will take them
-// out of this file.)
 #include "io/dem_scene.h"
 
 #include "core/constants.h"
 #include "core/error.h"
-#include "dem/models/normal.h"
 #include "dem/spatial_sort.h"
 #include "dem/walls/wall.h"
 #include "io/bond_keys.h"
 #include "io/domain_keys.h"
+#include "io/material_keys.h"
 #include "io/particle_file.h"
 #include "io/particle_flow_keys.h"
 #include "io/scene_limits.h"
@@ -26,118 +23,12 @@
 #include <map>
 #include <memory>
 #include <sstream>
-#include <stdexcept>
 
 namespace veridem::io
 {
 
 namespace
 {
-
-/// The scene names of a model list (dem/materials.h: kNormalModelList, kRollingModelList).
-template <class Model, std::size_t kCount>
-std::vector<std::string> modelNames(const dem::ModelEntry<Model> (&list)[kCount])
-{
-    std::vector<std::string> names;
-    for (const dem::ModelEntry<Model>& entry : list)
-        names.emplace_back(entry.name);
-    return names;
-}
-
-/// The listed model named `name` (one of modelNames(list): TableReader::choice checked it).
-template <class Model, std::size_t kCount>
-Model listedModel(const dem::ModelEntry<Model> (&list)[kCount], const std::string& name)
-{
-    for (const dem::ModelEntry<Model>& entry : list)
-        if (name == entry.name)
-            return entry.model;
-    throw std::logic_error("unlisted model '" + name + "'");
-}
-
-dem::Material readMaterial(TableReader& t)
-{
-    dem::Material m;
-    m.name = t.requiredString("name");
-    if (m.name.empty() || m.name.find_first_of(", \t\r\n\"#") != std::string::npos)
-        t.fail("name", "must be a non-empty name without commas, spaces, quotes or '#' (it is a column of "
-                       "state.csv and particles.csv)");
-    m.density = t.requiredNumber("density");
-    t.requirePositive("density", m.density, "kg/m^3");
-    m.normalModel =
-        listedModel(dem::kNormalModelList, t.choice("model", "linear", modelNames(dem::kNormalModelList)));
-    if (m.normalModel == dem::NormalModel::Linear)
-    {
-        m.normalStiffness = t.requiredNumber("kn");
-        t.requirePositive("kn", m.normalStiffness, "N/m");
-        m.tangentialStiffnessRatio = t.number("kt_over_kn", 2.0 / 7.0);
-        t.requireNonNegative("kt_over_kn", m.tangentialStiffnessRatio, "");
-    }
-    else
-    {
-        m.youngsModulus = t.requiredNumber("youngs_modulus");
-        t.requirePositive("youngs_modulus", m.youngsModulus, "Pa");
-        m.poissonRatio = t.requiredNumber("poisson_ratio");
-        if (!(m.poissonRatio > -1 && m.poissonRatio < 0.5))
-            t.fail("poisson_ratio", "must be in (-1, 0.5)");
-        if (dem::isAdhesive(m.normalModel))
-        {
-            m.surfaceEnergy = t.requiredNumber("surface_energy");
-            t.requireNonNegative("surface_energy", m.surfaceEnergy, "J/m^2");
-        }
-        if (m.normalModel == dem::NormalModel::Thornton)
-        {
-            m.yieldStress = t.requiredNumber("yield_stress");
-            t.requirePositive("yield_stress", m.yieldStress, "Pa");
-            const Real limit = dem::thorntonYieldStressLimit(m.youngsModulus, m.poissonRatio);
-            if (!(m.yieldStress < limit))
-                t.fail("yield_stress", "must be below E / (pi (1 - nu^2)) = " + std::to_string(limit) +
-                                           " Pa (at that pressure a like pair yields only at a contact "
-                                           "radius of R*)");
-            for (const char* key : {"restitution", "damping_rate", "tangential_damping_ratio"})
-                if (t.has(key))
-                    t.fail(key, "is not read by the \"thornton\" model: its restitution follows from "
-                                "yield_stress (plastic flow, no dashpot)");
-        }
-    }
-    if (m.normalModel != dem::NormalModel::Thornton && t.has("yield_stress"))
-        t.fail("yield_stress", "is read only by model = \"thornton\"");
-    m.restitution = t.number("restitution", 0.8);
-    if (!(m.restitution > 0 && m.restitution <= 1))
-        t.fail("restitution", "must be in (0, 1] (got " + std::to_string(m.restitution) + ")");
-    if (auto rate = t.optionalNumber("damping_rate"))
-    {
-        t.requireNonNegative("damping_rate", *rate, "1/s");
-        m.normalDampingRate = *rate;
-    }
-    if (auto ratio = t.optionalNumber("tangential_damping_ratio"))
-    {
-        t.requireNonNegative("tangential_damping_ratio", *ratio, "");
-        m.tangentialDampingRatio = *ratio;
-    }
-    m.friction = t.number("friction", 0.5);
-    t.requireNonNegative("friction", m.friction, "");
-    const std::string rolling =
-        t.choice("rolling_model", "constant_torque", modelNames(dem::kRollingModelList));
-    m.rollingFrictionLength = t.number("rolling_friction", 0.0);
-    t.requireNonNegative("rolling_friction", m.rollingFrictionLength, "m");
-    m.rollingFrictionDimensionless = t.number("rolling_friction_dimensionless", 0.0);
-    t.requireNonNegative("rolling_friction_dimensionless", m.rollingFrictionDimensionless, "");
-    if (m.rollingFrictionLength > 0 && m.rollingFrictionDimensionless > 0)
-        t.fail("rolling_friction_dimensionless",
-               "give rolling friction as a length or dimensionless, not both");
-    m.rollingDampingRatio = t.number("rolling_damping_ratio", 0.3);
-    m.rollingTwist = t.boolean("rolling_twist", true);
-    m.rollingViscousCoefficient = t.number("rolling_viscous_coefficient", 0.0);
-    t.requireNonNegative("rolling_viscous_coefficient", m.rollingViscousCoefficient, "s/m");
-    if (rolling == "viscous" && !(m.rollingViscousCoefficient > 0))
-        t.fail("rolling_viscous_coefficient", "must be > 0 s/m for rolling_model = \"viscous\"");
-    const bool anyRolling = m.rollingFrictionLength > 0 || m.rollingFrictionDimensionless > 0;
-    // (A model with no rolling friction given resists nothing: none; viscous takes its coefficient.)
-    m.rollingModel = rolling != "viscous" && !anyRolling ? dem::RollingModel::None
-                                                         : listedModel(dem::kRollingModelList, rolling);
-    t.finish();
-    return m;
-}
 
 /// Moves a sphere onto a wall at its resting overlap and, if asked, sets the no-slip spin.
 void placeOnWall(dem::World& world, std::uint32_t i, const dem::Wall& wall, bool noSlip, const TableReader& t)
@@ -261,38 +152,6 @@ void fillLattice(const Lattice& l, dem::World& world)
                 world.particles.add(x, l.velocity, {}, l.radius, density, l.material);
                 world.particles.fixed.back() = l.fixed;
             }
-}
-
-/// [[pair]]: explicit friction, restitution or rolling friction for one material pair.
-void applyPairOverride(TableReader& t, dem::World& world)
-{
-    const std::string a = t.requiredString("first"), b = t.requiredString("second");
-    const std::uint32_t ia = world.materialId(a), ib = world.materialId(b);
-    dem::PairParams params = world.pairs(ia, ib);
-    if (auto mu = t.optionalNumber("friction"))
-    {
-        t.requireNonNegative("friction", *mu, "");
-        params.mu = *mu;
-    }
-    if (auto e = t.optionalNumber("restitution"))
-    {
-        if (params.normalModel == dem::NormalModel::Thornton)
-            t.fail("restitution", "is not read by the \"thornton\" model: its restitution follows from "
-                                  "yield_stress");
-        if (!(*e > 0 && *e <= 1))
-            t.fail("restitution", "must be in (0, 1]");
-        params.dampingRatio = dem::dampingRatioFromRestitution(*e);
-        params.hertzBeta = dem::hertzBetaFromRestitution(params.normalModel, *e);
-    }
-    if (auto muR = t.optionalNumber("rolling_friction"))
-    {
-        t.requireNonNegative("rolling_friction", *muR, "m");
-        params.rollingLength = *muR;
-        params.rollingDimensionless = 0;
-    }
-    t.finish();
-    world.pairs.set(ia, ib, params);
-    world.pairs.set(ib, ia, params);
 }
 
 void checkInitialOverlaps(dem::World& world, Real tolerance)
@@ -498,8 +357,7 @@ DemScene readDemScene(const toml::table& root, const std::string& file)
         message << "is too close to 'min': " << e.what();
         domain->fail("max", message.str());
     }
-    for (auto& pair : pairs)
-        applyPairOverride(pair, world);
+    applyPairOverrides(pairs, world);
     return scene;
 }
 

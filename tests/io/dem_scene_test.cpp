@@ -92,9 +92,9 @@ TEST(DemScene, ErrorsNameWhatIsWrong)
     EXPECT_NE(errorOf("[simulation]\nduration = 1\n").find("missing required key 'dt'"), std::string::npos);
     const std::string material =
         "[simulation]\ndt = 1e-5\nduration = 1\n[[material]]\nname = \"a\"\ndensity = 1000\nkn = 1e3\n";
-    EXPECT_NE(
-        errorOf(material + "rolling_model = \"viscous\"\n").find("'rolling_viscous_coefficient' must be > 0"),
-        std::string::npos);
+    EXPECT_NE(errorOf(material + "rolling_model = \"viscous\"\n")
+                  .find("'rolling_viscous_coefficient' is required by rolling_model = \"viscous\""),
+              std::string::npos);
     const std::string wall = material + "[[wall]]\nname = \"plate\"\nmaterial = \"a\"\nnormal = [0,0,1]\n";
     EXPECT_NE(errorOf(wall + "oscillation_omega = -1\n").find("'oscillation_omega' must be >= 0"),
               std::string::npos);
