@@ -1,5 +1,6 @@
 # tests/distributed/CMakeLists.txt: the mpi_run_* tests. -DVERIDEM, -DMPIEXEC, -DSCENE, -DSTOP (the step a
-# run stops at, to be continued on another rank count), -DCOMPARE, -DWORK.
+# run stops at, to be continued on another rank count), -DCOMPARE, -DWORK; -DSAME_RANKS=ON: also
+# stopped on 2 ranks and continued on 2.
 file(REMOVE_RECURSE ${WORK})
 function(run name)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -18,4 +19,10 @@ run("2 ranks to step ${STOP}" ${np2} --out ${WORK}/two_one --stop-at-step ${STOP
 run("then 1 process" ${np1} --out ${WORK}/two_one --restart ${WORK}/two_one/checkpoint.bin)
 run("1 process to step ${STOP}" ${np1} --out ${WORK}/one_four --stop-at-step ${STOP})
 run("then 4 ranks" ${np4} --out ${WORK}/one_four --restart ${WORK}/one_four/checkpoint.bin)
-run("compare" python3 ${COMPARE} ${WORK}/single ${WORK}/two ${WORK}/four ${WORK}/two_one ${WORK}/one_four)
+set(runs ${WORK}/two ${WORK}/four ${WORK}/two_one ${WORK}/one_four)
+if(SAME_RANKS)
+  run("2 ranks to step ${STOP}" ${np2} --out ${WORK}/two_two --stop-at-step ${STOP})
+  run("then 2 ranks" ${np2} --out ${WORK}/two_two --restart ${WORK}/two_two/checkpoint.bin)
+  list(APPEND runs ${WORK}/two_two)
+endif()
+run("compare" python3 ${COMPARE} ${WORK}/single ${runs})
