@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <cstdio>
 #include <set>
 #include <string>
 #include <tuple>
@@ -66,9 +65,10 @@ std::vector<dem::Bond> getBonds(ByteReader& r, int from)
     return bonds;
 }
 
-auto key(const dem::Bond& b)
+/// A bond's partners, the lower id first (a bond formed in one process may run either way).
+std::pair<std::uint32_t, std::uint32_t> key(const dem::Bond& b)
 {
-    return std::pair{b.idA, b.idB};
+    return {std::min(b.idA, b.idB), std::max(b.idA, b.idB)};
 }
 
 } // namespace
@@ -202,19 +202,6 @@ std::optional<dem::BondSet> gatherBonds(const dem::BondSet& set, const dem::Part
     for (const dem::Bond& b : set.bonds)
         if (dem::countsBond(b, index(b.idA), index(b.idB), owned))
             mine.push_back(b);
-    for (const dem::Bond& b : set.bonds) // DEBUG
-        if (b.idA == 0xffffff)
-            std::fprintf(stderr, "x");
-    {
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> ks;
-        for (const dem::Bond& b : set.bonds)
-            ks.push_back(key(b));
-        std::sort(ks.begin(), ks.end());
-        for (std::size_t k = 1; k < ks.size(); ++k)
-            if (ks[k] == ks[k - 1])
-                std::fprintf(stderr, "DEBUG rank %d local dup %u %u idx %u %u owned %zu\n", comm.rank(), ks[k].first,
-                             ks[k].second, index(ks[k].first), index(ks[k].second), owned);
-    }
     std::vector<std::byte> message;
     ByteWriter w{message};
     for (const std::uint64_t c : {set.formed, set.broken, set.dropped, set.overstretched})
@@ -247,9 +234,6 @@ std::optional<dem::BondSet> gatherBonds(const dem::BondSet& set, const dem::Part
     }
     std::sort(total.bonds.begin(), total.bonds.end(),
               [](const dem::Bond& x, const dem::Bond& y) { return key(x) < key(y); });
-    for (std::size_t k = 1; k < total.bonds.size(); ++k) // DEBUG
-        if (key(total.bonds[k]) == key(total.bonds[k - 1]))
-            std::fprintf(stderr, "DEBUG dup %u %u\n", total.bonds[k].idA, total.bonds[k].idB);
     return total;
 }
 

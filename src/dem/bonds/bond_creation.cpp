@@ -67,8 +67,13 @@ std::size_t createBonds(BondSet& set, const ParticleStore& p, std::size_t owned)
                     }
                 }
     std::sort(found.begin(), found.end());
-    for (const auto& [i, j] : found)
+    // (with ghosts, on MPI ranks, two ranks form one bond: each from its lower-id partner, so that
+    // both hold it the same way round and advance it to the same bits)
+    const bool byId = owned < p.size();
+    for (auto [i, j] : found)
     {
+        if (byId && p.id[j] < p.id[i])
+            std::swap(i, j);
         set.bonds.push_back({p.id[i], p.id[j], i, j, formBond(p.position[i], p.position[j])});
         set.formed += countsBond(set.bonds.back(), i, j, owned);
     }

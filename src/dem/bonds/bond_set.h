@@ -71,7 +71,8 @@ inline bool countsBond(const Bond& bond, std::size_t a, std::size_t b, std::size
 
 /// Forms the bonds among the selected particles now (pairs within ra + rb + gapTolerance, neither
 /// retired, one of them among the store's first `owned`), in order of the first then the second
-/// partner's index; returns how many. Marks the set created.
+/// partner's index; returns how many. Marks the set created. Each bond runs from the partner of
+/// the lower index to the other, or, when the store holds ghosts (owned < size), of the lower id.
 std::size_t createBonds(BondSet& set, const ParticleStore& particles, std::size_t owned);
 inline std::size_t createBonds(BondSet& set, const ParticleStore& particles)
 {
