@@ -61,9 +61,6 @@ Simulation Simulation::fromTable(const toml::table& table, const std::string& na
     }
     io::DemScene& scene = s->scene;
     dem::World& world = scene.world;
-    if (s->severalRanks && world.bonds.enabled) // (dem/bonds/bond_set.h: one process holds the bonds)
-        throw InputError(name + ": [bonds] runs in one process only; bonds across MPI ranks are not "
-                                "supported yet (run without mpirun, threads share the work)");
     io::reportPlausibility(scene, name, options.strict, speak); // (io/plausibility.h)
     checkTimeStep(scene, name, options.allowUnstableTimeStep, speak);
     if (speak)

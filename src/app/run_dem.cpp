@@ -4,6 +4,7 @@
 #include "api/simulation.h"
 #include "app/run_scene.h"
 #include "core/error.h"
+#include "distributed/rank_bonds.h"
 #include "exec/thread_pool.h"
 #include "io/progress_line.h"
 #include "io/run_control.h"
@@ -88,6 +89,11 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                                static_cast<std::uint64_t>(sim.particleSteps())};
     if (severalRanks)
         options.ranks->sum(counts);
+    std::optional<dem::BondSet> bonds; // (on several ranks, every rank's: distributed/rank_bonds.h)
+    if (world.bonds.enabled)
+        bonds = severalRanks ? distributed::gatherBonds(world.bonds, world.particles, sim.ownedParticles(),
+                                                        *options.ranks, 0)
+                             : world.bonds;
     if (!root)
         return 0;
     progress.finish();
@@ -106,9 +112,9 @@ int runDemScene(const toml::table& table, const RunOptions& options)
                     "rebuilds\n",
                     wall, exec::threads(), wall > 0 ? sim.particleSteps() / wall : 0.0,
                     world.neighbors.rebuildCount());
-    if (world.bonds.enabled) // (dem/bonds/bond_set.h)
+    if (bonds) // (dem/bonds/bond_set.h)
     {
-        const dem::BondSet& b = world.bonds;
+        const dem::BondSet& b = *bonds;
         std::printf("veridem: bonds: %llu formed, %llu broken, %llu dropped with a removed particle, %zu "
                     "intact\n",
                     static_cast<unsigned long long>(b.formed), static_cast<unsigned long long>(b.broken),

@@ -374,7 +374,8 @@ Motion stepAfterKickDrift(World& world, Real dt, const Motion& moved, bool lanes
         world.observer->beforeForces(world, dt);
     computePairForces(world, dt, sumsAreZero); // 3. pair forces at t+dt, summed within blocks
     if (world.bonds.enabled) [[unlikely]]      //    and the bonds, in their order (dem/bonds)
-        applyBonds(world.bonds, world.particles, world.time, dt);
+        applyBonds(world.bonds, world.particles,
+                   world.ranks ? world.ranks->ownedParticles() : world.particles.size(), world.time, dt);
     clock.lap(&StepProfile::pairForces);
     // 4. cross-block and wall contacts, then v(t+dt) (and, if driftNext, v(t+3dt/2), x(t+2dt))
     const Motion next = finishParticles(world, dt, lanes, driftNext);

@@ -2,6 +2,7 @@
 
 #include "distributed/bytes.h"
 #include "distributed/halo.h"
+#include "distributed/rank_bonds.h"
 #include "distributed/rank_history.h"
 
 #include <algorithm>
@@ -100,6 +101,9 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     else
         messages[root] = std::move(mine);
     messages = comm.exchange(std::move(messages));
+    std::optional<dem::BondSet> bonds; // (distributed/rank_bonds.h)
+    if (local.bonds.enabled)
+        bonds = gatherBonds(local.bonds, p, owned, comm, root);
     if (root != kEveryRank && comm.rank() != root)
         return std::nullopt;
 
@@ -135,6 +139,11 @@ std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& r
     for (const std::uint32_t i : order)
         whole.particles.appendRow(gathered, i);
     adoptHistory(whole, sources);
+    if (bonds)
+    {
+        whole.bonds = std::move(*bonds);
+        keepOwnedBonds(whole.bonds, whole.particles, whole.particles.size()); // (indexed in it)
+    }
     dem::refreshFixedParticles(whole);
     whole.prepared = true;
     dem::rebuildContactLists(whole);

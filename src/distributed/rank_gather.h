@@ -24,7 +24,8 @@ inline constexpr int kEveryRank = -1;
 
 /// On rank `root` (every rank with kEveryRank): a world holding `local`'s state that every rank
 /// shares (walls, materials, pair table, time, step count, skin and reach, gravity), every rank's
-/// owned particles by id (rows whole, force and torque included), their contacts' history, and
+/// owned particles by id (rows whole, force and torque included), their contacts' history, their
+/// bonds with the bond counts (distributed/rank_bonds.h), and
 /// the wall loads (with recordLoads); lists rebuilt, not distributed (world.ranks null).
 /// Elsewhere: nullopt. Collective. O(N) on each receiving rank.
 std::optional<dem::World> gatherWorld(const dem::World& local, const RankStep& ranks, int root = 0);

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "dem/forces.h"
 #include "dem/particle_changes.h"
+#include "distributed/rank_bonds.h"
 #include "distributed/rank_history.h"
 
 #include <algorithm>
@@ -61,6 +62,8 @@ void RankStep::distribute(dem::World& world)
 {
     if (world.prepared) // (a restored world: the particles its outlets retired leave first)
         dem::removeRetiredParticles(world);
+    // (a restored world's bonds: those of removed particles dropped, the totals on the first rank)
+    startBondCounts(world.bonds, world.particles, comm_.rank() == 0);
     wrapIntoBox(world);
     dem::ParticleStore& p = world.particles;
     const std::size_t n = p.size();
@@ -82,7 +85,9 @@ void RankStep::distribute(dem::World& world)
 
     if (!world.prepared) // a fresh start: prepare this rank's part only (no contacts yet to carry)
     {
-        halo_ = splitWholeStore(p, decomposition_, std::max(largest + world.neighbors.skin, kLeast),
+        // (bonds: their halo from the start, rank_bonds.h; none are formed yet)
+        const Real bonds = bondHalo(world.bonds, largest, world.neighbors.skin);
+        halo_ = splitWholeStore(p, decomposition_, std::max({largest + world.neighbors.skin, bonds, kLeast}),
                                 comm_.rank());
         dem::prepare(world);
         // The touch reach (JKR adhesion) from the materials and radii of all ranks' particles: the
@@ -90,7 +95,7 @@ void RankStep::distribute(dem::World& world)
         // forces with them.
         double reach = world.neighbors.reach;
         comm_.max(std::span(&reach, 1));
-        haloWidth_ = std::max(largest + world.neighbors.skin + reach, kLeast);
+        haloWidth_ = std::max({largest + world.neighbors.skin + reach, bonds, kLeast});
         world.ranks = this;
         if (reach > 0)
         {
@@ -102,12 +107,15 @@ void RankStep::distribute(dem::World& world)
         return;
     }
     // A restored (or prepared) world: its contact history, keyed by id, goes with the particles.
-    haloWidth_ = std::max(largest + world.neighbors.skin + world.neighbors.reach, kLeast);
+    haloWidth_ = std::max({largest + world.neighbors.skin + world.neighbors.reach,
+                           bondHalo(world.bonds, largest, world.neighbors.skin), kLeast});
     KeyedHistory all;
     exportHistory(
         world, [](std::uint32_t) { return true; }, all);
     halo_ = splitWholeStore(p, decomposition_, haloWidth_, comm_.rank());
     adoptHistory(world, std::span(&all, 1));
+    if (world.bonds.enabled)
+        keepOwnedBonds(world.bonds, p, halo_.owned);
     dem::refreshFixedParticles(world);
     world.ranks = this;
     dem::rebuildContactLists(world);
@@ -171,6 +179,10 @@ void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
     std::vector<int> dest(owned);
     for (std::size_t i = 0; i < owned; ++i)
         dest[i] = gone[i] ? -1 : decomposition_.owner(p.position[i]);
+    // The bonds go with their partners (rank_bonds.h), before the store changes.
+    Buffers bondMail;
+    if (world.bonds.enabled)
+        bondMail = routeBonds(world.bonds, p, dest, comm_);
 
     // The history this rank keeps (a contact of a particle it still owns) and the history that
     // leaves with each migrant (every contact of it), in one pass over the lists.
@@ -222,7 +234,8 @@ void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
             // (a larger particle than any before widens the halo on every rank alike: all see
             // the same arrivals)
             haloWidth_ =
-                std::max(haloWidth_, arrivals->radius[i] + world.neighbors.skin + world.neighbors.reach);
+                std::max({haloWidth_, arrivals->radius[i] + world.neighbors.skin + world.neighbors.reach,
+                          bondHalo(world.bonds, arrivals->radius[i], world.neighbors.skin)});
         }
     halo_ = exchangeParticles(p, p.size(), decomposition_, haloWidth_, comm_, arrivals != nullptr);
     exchangeBytes_ += halo_.bytesSent;
@@ -240,6 +253,12 @@ void RankStep::exchange(dem::World& world, const dem::ParticleStore* arrivals)
         if (a != me)
             sources.push_back(unpackHistory(in[a], a));
     adoptHistory(world, sources);
+    if (world.bonds.enabled)
+    {
+        for (const auto& mail : bondMail)
+            exchangeBytes_ += mail.size();
+        adoptBonds(world.bonds, p, halo_.owned, comm_.exchange(std::move(bondMail)));
+    }
     dem::refreshFixedParticles(world);
 }
 

@@ -11,6 +11,8 @@
 //     and every `rebalanceEvery`-th time the regions are first cut again by recursive bisection
 //     of the particles weighted by their contacts (distributed/bisection.h), so the regions follow a pour
 //     or a draining silo;
+//     with [bonds], a migrant's bonds go with it too and the halo covers the bonds' reach
+//     (distributed/rank_bonds.h);
 //   - after the step, the ranks combine their health, so that every rank stops at the same step.
 //
 // Bits. On a given rank count a run gives the same bits every time and on any thread count (each

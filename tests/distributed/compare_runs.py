@@ -43,7 +43,8 @@ def compare(reference, other):
         for line, (x, y) in enumerate(zip(a[1:], b[1:]), start=2):
             for column, (u, v) in enumerate(zip(x, y)):
                 key = header[column]
-                if key in ("t", "id", "particles", "wall", "pair_contacts", "wall_contacts", "outlet", "count"):
+                if key in ("t", "id", "particles", "wall", "pair_contacts", "wall_contacts", "outlet", "count",
+                           "bonds_intact", "bonds_broken"):
                     if key == "t" and abs(float(u) - float(v)) > 1e-12:
                         fail(f"{other}/{name} line {line}: t = {v}, expected {u}")
                     if key != "t" and u != v:

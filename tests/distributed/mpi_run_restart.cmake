@@ -1,6 +1,7 @@
 # tests/distributed/CMakeLists.txt: the mpi_run_* tests. -DVERIDEM, -DMPIEXEC, -DSCENE, -DSTOP (the step a
 # run stops at, to be continued on another rank count), -DCOMPARE, -DWORK; -DSTRAIGHT_FOUR=OFF leaves
-# out the straight run on 4 ranks (the sanitizer build: tests/distributed/CMakeLists.txt says why).
+# out the straight run on 4 ranks (the sanitizer build: tests/distributed/CMakeLists.txt says why);
+# -DSAME_RANKS=ON: also stopped on 2 ranks and continued on 2.
 file(REMOVE_RECURSE ${WORK})
 function(run name)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -23,4 +24,10 @@ run("2 ranks to step ${STOP}" ${np2} --out ${WORK}/two_one --stop-at-step ${STOP
 run("then 1 process" ${np1} --out ${WORK}/two_one --restart ${WORK}/two_one/checkpoint.bin)
 run("1 process to step ${STOP}" ${np1} --out ${WORK}/one_four --stop-at-step ${STOP})
 run("then 4 ranks" ${np4} --out ${WORK}/one_four --restart ${WORK}/one_four/checkpoint.bin)
-run("compare" python3 ${COMPARE} ${compared} ${WORK}/two_one ${WORK}/one_four)
+list(APPEND compared ${WORK}/two_one ${WORK}/one_four)
+if(SAME_RANKS)
+  run("2 ranks to step ${STOP}" ${np2} --out ${WORK}/two_two --stop-at-step ${STOP})
+  run("then 2 ranks" ${np2} --out ${WORK}/two_two --restart ${WORK}/two_two/checkpoint.bin)
+  list(APPEND compared ${WORK}/two_two)
+endif()
+run("compare" /usr/bin/python3 ${COMPARE} ${compared})

@@ -25,7 +25,7 @@ struct Binned
 
 } // namespace
 
-std::size_t createBonds(BondSet& set, const ParticleStore& p)
+std::size_t createBonds(BondSet& set, const ParticleStore& p, std::size_t owned)
 {
     set.created = true;
     const auto selected = [&](std::size_t i)
@@ -59,7 +59,7 @@ std::size_t createBonds(BondSet& set, const ParticleStore& p)
                          it != bins.end() && it->cx == lo.cx && it->cy == lo.cy && it->cz == lo.cz; ++it)
                     {
                         const std::uint32_t i = s.index, j = it->index;
-                        if (j <= i)
+                        if (j <= i || (i >= owned && j >= owned)) // (a pair of ghosts: not ours)
                             continue;
                         const Real reach = p.radius[i] + p.radius[j] + set.gapTolerance;
                         if (lengthSquared(p.position[j] - p.position[i]) <= reach * reach)
@@ -67,9 +67,16 @@ std::size_t createBonds(BondSet& set, const ParticleStore& p)
                     }
                 }
     std::sort(found.begin(), found.end());
-    for (const auto& [i, j] : found)
+    // (with ghosts, on MPI ranks, two ranks form one bond: each from its lower-id partner, so that
+    // both hold it the same way round and advance it to the same bits)
+    const bool byId = owned < p.size();
+    for (auto [i, j] : found)
+    {
+        if (byId && p.id[j] < p.id[i])
+            std::swap(i, j);
         set.bonds.push_back({p.id[i], p.id[j], i, j, formBond(p.position[i], p.position[j])});
-    set.formed += found.size();
+        set.formed += countsBond(set.bonds.back(), i, j, owned);
+    }
     return found.size();
 }
 

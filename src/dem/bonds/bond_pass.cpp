@@ -48,13 +48,13 @@ Real reduced(Real invA, bool fixedA, Real invB, bool fixedB)
 
 } // namespace
 
-void applyBonds(BondSet& set, ParticleStore& p, Real time, Real dt)
+void applyBonds(BondSet& set, ParticleStore& p, std::size_t owned, Real time, Real dt)
 {
     if (!set.created)
     {
         if (time + dt < set.createAt)
             return;
-        createBonds(set, p); // at x(t + dt): unloaded now, the increments start with the next step
+        createBonds(set, p, owned); // at x(t + dt): unloaded now, the increments start with the next step
         return;
     }
     bool mapped = false;
@@ -77,7 +77,9 @@ void applyBonds(BondSet& set, ParticleStore& p, Real time, Real dt)
         const std::uint32_t a = bond.a, b = bond.b;
         if (a == kNoIndex || b == kNoIndex || p.retired(a) || p.retired(b))
         {
-            ++set.dropped;
+            // (on several ranks a removed particle's bonds are dropped at the exchange that takes
+            // it out, distributed/rank_bonds.h: here only in one process, where owned = size)
+            set.dropped += a == kNoIndex || b == kNoIndex || countsBond(bond, a, b, owned);
             continue;
         }
         const BondPartners q{p.position[a],
@@ -91,18 +93,25 @@ void applyBonds(BondSet& set, ParticleStore& p, Real time, Real dt)
                              reduced(p.invMass[a], p.fixed[a], p.invMass[b], p.fixed[b]),
                              reduced(p.invInertia[a], p.fixed[a], p.invInertia[b], p.fixed[b])};
         const BondLoad load = bondStep(set.params, bond.state, q, dt);
+        const bool counts = countsBond(bond, a, b, owned);
         if (load.broken)
         {
-            ++set.broken;
+            set.broken += counts;
             continue;
         }
-        p.force[a] = p.force[a] - load.forceOnB;
-        p.force[b] = p.force[b] + load.forceOnB;
-        p.torque[a] = p.torque[a] + load.torqueOnA;
-        p.torque[b] = p.torque[b] + load.torqueOnB;
+        if (a < owned) // (a ghost's sums are not read: its owner adds its own share)
+        {
+            p.force[a] = p.force[a] - load.forceOnB;
+            p.torque[a] = p.torque[a] + load.torqueOnA;
+        }
+        if (b < owned)
+        {
+            p.force[b] = p.force[b] + load.forceOnB;
+            p.torque[b] = p.torque[b] + load.torqueOnB;
+        }
         const Real strain = (length(q.xb - q.xa) - bond.state.restLength) / bond.state.restLength;
         maxStrain = std::fmax(maxStrain, strain);
-        overstretched += strain > BondSet::kOverstretch;
+        overstretched += counts && strain > BondSet::kOverstretch;
         set.bonds[kept++] = bond;
     }
     set.bonds.resize(kept);

@@ -15,6 +15,14 @@
 // Cundall's parallel bond: two bonded particles pressed into overlap also feel their contact; a
 // bond formed across a gap adds nothing to the contact until they touch. A broken bond leaves the
 // pair an ordinary contact.
+//
+// On several MPI ranks (distributed/rank_bonds.h) a rank's store holds its owned particles, then
+// ghosts: a rank holds every bond with an owned partner, evaluates it from the ghost's exact copy
+// of the other partner's motion (so two ranks holding one bond advance its state to the same bits
+// and break it at the same step), and adds its loads to the owned partner only (`owned`: the
+// store's first `owned` particles; all of them in one process). An event of a bond held by two
+// ranks (formed, broken, dropped, overstretched) is counted by the rank owning its partner of the
+// lower id, so the ranks' counts sum to one process's.
 #pragma once
 
 #include "dem/bonds/bond_law.h"
@@ -54,14 +62,27 @@ struct BondSet
     std::vector<std::uint32_t> indexOfId; // id -> index (kNoIndex: none); rebuilt when stale
 };
 
+/// True if this rank counts the events of `bond` (its partners at store indices a, b): it owns the
+/// partner of the lower id (file comment; always in one process, where owned = the store's size).
+inline bool countsBond(const Bond& bond, std::size_t a, std::size_t b, std::size_t owned)
+{
+    return (bond.idA < bond.idB ? a : b) < owned;
+}
+
 /// Forms the bonds among the selected particles now (pairs within ra + rb + gapTolerance, neither
-/// retired), in order of the first then the second partner's index; returns how many. Marks the
-/// set created.
-std::size_t createBonds(BondSet& set, const ParticleStore& particles);
+/// retired, one of them among the store's first `owned`), in order of the first then the second
+/// partner's index; returns how many. Marks the set created. Each bond runs from the partner of
+/// the lower index to the other, or, when the store holds ghosts (owned < size), of the lower id.
+std::size_t createBonds(BondSet& set, const ParticleStore& particles, std::size_t owned);
+inline std::size_t createBonds(BondSet& set, const ParticleStore& particles)
+{
+    return createBonds(set, particles, particles.size());
+}
 
 /// The step's bond pass (see the file comment): forms the bonds if due (t_end = time + dt >=
 /// createAt; unloaded at that step), else advances each intact bond over dt [s], adding its loads
-/// to the partners' force and torque sums; broken and dropped bonds leave the list.
-void applyBonds(BondSet& set, ParticleStore& particles, Real time, Real dt);
+/// to the force and torque sums of the partners among the store's first `owned`; broken and
+/// dropped bonds leave the list.
+void applyBonds(BondSet& set, ParticleStore& particles, std::size_t owned, Real time, Real dt);
 
 } // namespace veridem::dem
