@@ -132,11 +132,11 @@ void World::sumNodeForces()
                       if (joints)
                           for (std::uint32_t s = jointSlotStart_[n]; s < jointSlotStart_[n + 1]; ++s)
                           {
-                              const std::uint32_t j = jointSlots_[s] / 4, end = jointSlots_[s] % 4;
+                              const std::uint32_t j = jointSlots_[s] / 4, corner = jointSlots_[s] % 4;
                               if (joints_.event[j] != 1)
                                   continue;
-                              const Vec2 jf = joints_.endForce[j][end % 2];
-                              if (end < 2)
+                              const Vec2 jf = joints_.endForce[j][corner % 2];
+                              if (corner < 2)
                                   f += jf;
                               else
                                   f -= jf;
