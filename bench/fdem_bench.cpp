@@ -84,7 +84,12 @@ void jointedBlock(int threads, int steps, int cells)
     rock.fracture.penalty = 1e11;
     rock.fracture.curve = SofteningCurve::Linear;
     const auto m = world.addMaterial(rock, "rock");
-    BodyDefinition platen{"platen", meshRectangle({-0.05, -0.05}, {0.6, 0.05}, 12, 1), m};
+    // The platen's cells are the block's size: the broad phase's cell is the largest triangle's box
+    // (broadphase.h), and 5 cm platen cells put ~1000 block triangles in a cell (a detection took
+    // ~0.85 s, 6 detections 60 % of 60 steps).
+    const double h = 0.5 / cells;
+    BodyDefinition platen{"platen",
+                          meshRectangle({-0.05, -4 * h}, {0.6, 4 * h}, static_cast<int>(0.6 / h), 4), m};
     platen.fixed = true;
     world.addBody(platen);
     // The stable step from a 4 x 4-cell block of the same cells (the same elements, masses and
