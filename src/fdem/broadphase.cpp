@@ -1,5 +1,7 @@
 #include "fdem/broadphase.h"
 
+#include "exec/thread_pool.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -51,33 +53,54 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> findCandidatePairs(const st
         for (std::size_t i = 0; i < n; ++i)
             sorted[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
     }
-    const auto test = [&](std::uint32_t i, std::uint32_t j)
-    {
-        const BoundingBox &a = boxes[i], &b = boxes[j];
-        if (a.group != b.group && (a.active || b.active) && withinBuffer(a, b, buffer))
-            pairs.emplace_back(std::min(i, j), std::max(i, j));
-    };
-    for (std::size_t iy = 0; iy < ny; ++iy)
-        for (std::size_t ix = 0; ix < nx; ++ix)
-        {
-            const std::size_t c = iy * nx + ix;
-            for (std::uint32_t p = start[c]; p < start[c + 1]; ++p)
-            {
-                for (std::uint32_t q = p + 1; q < start[c + 1]; ++q)
-                    test(sorted[p], sorted[q]);
-                // half neighbourhood: E, NW, N, NE
-                const long offsets[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-                for (const auto& o : offsets)
-                {
-                    const long jx = static_cast<long>(ix) + o[0], jy = static_cast<long>(iy) + o[1];
-                    if (jx < 0 || jy < 0 || jx >= static_cast<long>(nx) || jy >= static_cast<long>(ny))
-                        continue;
-                    const std::size_t d = static_cast<std::size_t>(jy) * nx + static_cast<std::size_t>(jx);
-                    for (std::uint32_t q = start[d]; q < start[d + 1]; ++q)
-                        test(sorted[p], sorted[q]);
-                }
-            }
-        }
+    // Rows of cells in chunks on the thread pool, each chunk into its own list; the lists are joined
+    // and sorted, so the result does not depend on the thread count.
+    constexpr std::size_t kRows = 8;
+    const std::size_t chunks = (ny + kRows - 1) / kRows;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(chunks);
+    exec::run(static_cast<int>(chunks),
+              [&](int chunk)
+              {
+                  auto& out = found[static_cast<std::size_t>(chunk)];
+                  const auto test = [&](std::uint32_t i, std::uint32_t j)
+                  {
+                      const BoundingBox &a = boxes[i], &b = boxes[j];
+                      if (a.group != b.group && (a.active || b.active) && withinBuffer(a, b, buffer))
+                          out.emplace_back(std::min(i, j), std::max(i, j));
+                  };
+                  const std::size_t rowEnd = std::min(ny, (static_cast<std::size_t>(chunk) + 1) * kRows);
+                  for (std::size_t iy = static_cast<std::size_t>(chunk) * kRows; iy < rowEnd; ++iy)
+                      for (std::size_t ix = 0; ix < nx; ++ix)
+                      {
+                          const std::size_t c = iy * nx + ix;
+                          for (std::uint32_t p = start[c]; p < start[c + 1]; ++p)
+                          {
+                              for (std::uint32_t q = p + 1; q < start[c + 1]; ++q)
+                                  test(sorted[p], sorted[q]);
+                              // half neighbourhood: E, NW, N, NE
+                              const long offsets[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+                              for (const auto& o : offsets)
+                              {
+                                  const long jx = static_cast<long>(ix) + o[0],
+                                             jy = static_cast<long>(iy) + o[1];
+                                  if (jx < 0 || jy < 0 || jx >= static_cast<long>(nx) ||
+                                      jy >= static_cast<long>(ny))
+                                      continue;
+                                  const std::size_t d =
+                                      static_cast<std::size_t>(jy) * nx + static_cast<std::size_t>(jx);
+                                  for (std::uint32_t q = start[d]; q < start[d + 1]; ++q)
+                                      test(sorted[p], sorted[q]);
+                              }
+                          }
+                      }
+                  std::sort(out.begin(), out.end());
+              });
+    std::size_t total = 0;
+    for (const auto& f : found)
+        total += f.size();
+    pairs.reserve(total);
+    for (const auto& f : found)
+        pairs.insert(pairs.end(), f.begin(), f.end());
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }

@@ -1,15 +1,20 @@
 // Design note: one step of the 2D FEM/DEM solver, read top to bottom in World::step().
 //
 //  1. computeElementForces  CST internal forces (elements/cst.h), a pure function per triangle of its
-//                           reference inverse and current nodes, scattered to the nodes, plus gravity
-//                           (world_elements.cpp); then the joints of bodies that crack (world_fracture.cpp).
+//                           reference inverse and current nodes (world_elements.cpp); then the joints
+//                           of bodies that crack (world_fracture.cpp); then sumNodeForces adds gravity,
+//                           element and joint forces per node in a fixed order.
 //  2. detectContacts        only when the Verlet-skin criterion says the candidate list may be stale
 //                           (broadphase.h); history is carried by persistent keys (contact_list.h).
-//  3. computeContactForces  per couple, both roles: potential contact (contact/potential.h) gives the
-//                           elastic normal force of each contactor edge inside the target; the normal
-//                           dashpot and the Coulomb law (contact/friction.h) act at the same point.
+//  3. computeContactForces  per couple, both roles (world_contacts.cpp): potential contact
+//                           (contact/potential.h) gives the elastic normal force of each contactor
+//                           edge inside the target; the normal dashpot and the Coulomb law
+//                           (contact/friction.h) act at the same point.
 //  4. integrate             central difference: v_{n+1/2} = v_{n-1/2} + dt f_n / m,
 //                           x_{n+1} = x_n + dt v_{n+1/2}.
+//
+// Every loop runs on the thread pool (src/exec/) in chunks whose results are combined in a fixed
+// order, so every value has the same bits on any thread count.
 //
 // Contact stiffness and damping per edge contact (L_in: length of the contactor edge inside the
 // target, H_t: smallest altitude of the target, rho_c: contactor density):
@@ -35,12 +40,14 @@
 #include "fdem/world.h"
 
 #include "core/error.h"
+#include "exec/thread_pool.h"
 #include "fdem/broadphase.h"
 #include "fdem/contact/friction.h"
 #include "fdem/contact/potential.h"
 #include "fdem/elements/cst.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -49,6 +56,8 @@ namespace veridem::fdem
 
 namespace
 {
+
+constexpr std::size_t kNodeChunk = 4096; // nodes or triangles per chunk of the per-item loops
 
 void checkContactParameters(const ContactParameters& c)
 {
@@ -195,6 +204,7 @@ void World::refreshActiveLists()
             activeTriangles_.push_back(static_cast<std::uint32_t>(t));
     }
     listsValid_ = true;
+    nodeSlotsValid_ = false;
 }
 
 void World::setNodeVelocity(std::uint32_t node, Vec2 velocity)
@@ -205,15 +215,33 @@ void World::setNodeVelocity(std::uint32_t node, Vec2 velocity)
 
 void World::step()
 {
+    using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point& start)
+    {
+        const auto now = Clock::now();
+        const double elapsed = std::chrono::duration<double>(now - start).count();
+        start = now;
+        return elapsed;
+    };
     if (!listsValid_)
         refreshActiveLists();
+    if (!nodeSlotsValid_)
+        buildNodeSlots(); // world_elements.cpp
+    auto start = Clock::now();
     computeElementForces();
+    stepTimes_.elements += since(start);
     if (!joints_.nodes.empty())
         computeJointForces();
+    stepTimes_.joints += since(start);
+    sumNodeForces();
+    stepTimes_.nodeForces += since(start);
     if (needsDetection())
         detectContacts();
-    computeContactForces();
+    stepTimes_.detection += since(start);
+    computeContactForces(); // world_contacts.cpp
+    stepTimes_.contacts += since(start);
     integrate();
+    stepTimes_.integration += since(start);
     time_ += settings_.timeStep;
     ++steps_;
 }
@@ -222,10 +250,24 @@ bool World::needsDetection() const
 {
     if (!contactsValid_)
         return true;
+    // The largest displacement since the detection, per chunk on the thread pool (a maximum is exact
+    // in any order; a NaN displacement is skipped by std::max in any chunk as it was serially).
+    const std::size_t count = activeNodes_.size();
+    const int chunks = static_cast<int>((count + kNodeChunk - 1) / kNodeChunk);
+    std::vector<Real> chunkMax(static_cast<std::size_t>(chunks), 0);
+    exec::run(chunks,
+              [&](int c)
+              {
+                  Real m = 0;
+                  const std::size_t end = std::min(count, (static_cast<std::size_t>(c) + 1) * kNodeChunk);
+                  for (std::size_t i = static_cast<std::size_t>(c) * kNodeChunk; i < end; ++i)
+                      m = std::max(m,
+                                   lengthSquared(nodes_.position[activeNodes_[i]] - positionAtDetection_[i]));
+                  chunkMax[static_cast<std::size_t>(c)] = m;
+              });
     Real maxSquared = 0;
-    for (std::size_t i = 0; i < activeNodes_.size(); ++i)
-        maxSquared =
-            std::max(maxSquared, lengthSquared(nodes_.position[activeNodes_[i]] - positionAtDetection_[i]));
+    for (const Real m : chunkMax)
+        maxSquared = std::max(maxSquared, m);
     return 4 * maxSquared > buffer_ * buffer_; // 2 d_max > buffer
 }
 
@@ -243,22 +285,32 @@ void World::detectContacts()
         }
     }
     std::vector<BoundingBox> boxes(triangles_.size());
-    for (std::size_t t = 0; t < triangles_.size(); ++t)
-    {
-        const auto& ids = triangles_.nodes[t];
-        BoundingBox& box = boxes[t];
-        // Triangles of a body that cracks are each their own group (self-contact); see jointedOrAdjacent.
-        const std::uint32_t group =
-            bodyCracks_[triangles_.body[t]] ? (1u << 31) | static_cast<std::uint32_t>(t) : triangles_.body[t];
-        box = {nodes_.position[ids[0]], nodes_.position[ids[0]], group, false};
-        for (auto n : ids)
-        {
-            const Vec2 x = nodes_.position[n];
-            box.lo = {std::min(box.lo.x, x.x), std::min(box.lo.y, x.y)};
-            box.hi = {std::max(box.hi.x, x.x), std::max(box.hi.y, x.y)};
-            box.active = box.active || !nodes_.prescribed[n] || lengthSquared(nodes_.velocity[n]) > 0;
-        }
-    }
+    const std::size_t count = triangles_.size();
+    const int chunks = static_cast<int>((count + kNodeChunk - 1) / kNodeChunk);
+    exec::run(chunks,
+              [&](int c)
+              {
+                  const std::size_t end = std::min(count, (static_cast<std::size_t>(c) + 1) * kNodeChunk);
+                  for (std::size_t t = static_cast<std::size_t>(c) * kNodeChunk; t < end; ++t)
+                  {
+                      const auto& ids = triangles_.nodes[t];
+                      BoundingBox& box = boxes[t];
+                      // Triangles of a body that cracks are each their own group (self-contact); see
+                      // jointedOrAdjacent.
+                      const std::uint32_t group = bodyCracks_[triangles_.body[t]]
+                                                      ? (1u << 31) | static_cast<std::uint32_t>(t)
+                                                      : triangles_.body[t];
+                      box = {nodes_.position[ids[0]], nodes_.position[ids[0]], group, false};
+                      for (auto n : ids)
+                      {
+                          const Vec2 x = nodes_.position[n];
+                          box.lo = {std::min(box.lo.x, x.x), std::min(box.lo.y, x.y)};
+                          box.hi = {std::max(box.hi.x, x.x), std::max(box.hi.y, x.y)};
+                          box.active =
+                              box.active || !nodes_.prescribed[n] || lengthSquared(nodes_.velocity[n]) > 0;
+                      }
+                  }
+              });
     auto pairs = findCandidatePairs(boxes, buffer_);
     removeTiedPairs(pairs);
     contacts_.rebuild(pairs);
@@ -269,148 +321,23 @@ void World::detectContacts()
     ++detections_;
 }
 
-void World::computeContactForces()
-{
-    const ContactParameters& cp = settings_.contact;
-    const Real dt = settings_.timeStep;
-    diagnostics_ = {};
-    for (Couple& couple : contacts_.couples())
-    {
-        const std::uint32_t tri[2] = {couple.first, couple.second};
-        std::array<Vec2, 3> x[2];
-        Vec2 lo[2], hi[2];
-        for (int k = 0; k < 2; ++k)
-        {
-            const auto& ids = triangles_.nodes[tri[k]];
-            for (int i = 0; i < 3; ++i)
-                x[k][i] = nodes_.position[ids[i]];
-            lo[k] = {std::min({x[k][0].x, x[k][1].x, x[k][2].x}),
-                     std::min({x[k][0].y, x[k][1].y, x[k][2].y})};
-            hi[k] = {std::max({x[k][0].x, x[k][1].x, x[k][2].x}),
-                     std::max({x[k][0].y, x[k][1].y, x[k][2].y})};
-        }
-        if (lo[0].x > hi[1].x || lo[1].x > hi[0].x || lo[0].y > hi[1].y || lo[1].y > hi[0].y)
-        {
-            couple.spring.fill(0); // apart: every edge contact is open
-            couple.depth.fill(0);
-            continue;
-        }
-        std::array<Vec2, 3> v[2];
-        for (int k = 0; k < 2; ++k)
-            for (int i = 0; i < 3; ++i)
-                v[k][i] = nodes_.velocity[triangles_.nodes[tri[k]][i]];
-        for (int role = 0; role < 2; ++role)
-        {
-            const int c = role, t = 1 - role;
-            const Real rho = materials_[triangles_.material[tri[c]]].density;
-            const Real targetAltitude = triangleMinAltitude_[tri[t]];
-            const auto& contactorNodes = triangles_.nodes[tri[c]];
-            const auto& targetNodes = triangles_.nodes[tri[t]];
-            // Barycentric coordinates of the contactor's nodes in the target, shared by its edges. If
-            // all three lie outside one target edge (lambda_k < 0), no contactor edge can enter.
-            const std::array<std::array<Real, 3>, 3> lambda{
-                barycentric(x[c][0], x[t]), barycentric(x[c][1], x[t]), barycentric(x[c][2], x[t])};
-            bool separated = false;
-            for (int k = 0; k < 3; ++k)
-                separated = separated || (lambda[0][k] < 0 && lambda[1][k] < 0 && lambda[2][k] < 0);
-            if (separated)
-            {
-                for (int e = 0; e < 3; ++e)
-                    couple.spring[3 * role + e] = couple.depth[3 * role + e] = 0;
-                continue;
-            }
-            for (int e = 0; e < 3; ++e)
-            {
-                Real& spring = couple.spring[3 * role + e];
-                Real& previousDepth = couple.depth[3 * role + e];
-                const int e1 = (e + 1) % 3;
-                const EdgePenetration pen = edgeInTriangle(lambda[e], lambda[e1]);
-                if (!pen.touching())
-                {
-                    spring = 0;
-                    previousDepth = 0;
-                    continue;
-                }
-                const Vec2 edge = x[c][e1] - x[c][e];
-                const Real edgeLength = length(edge);
-                const Vec2 tangent = edge / edgeLength;
-                const Vec2 normal{tangent.y, -tangent.x}; // outward for counter-clockwise triangles
-                const Real s = pen.centre();
-                const Vec2 contactorVelocity = (1 - s) * v[c][e] + s * v[c][e1];
-                const Vec2 targetVelocity = pen.targetWeight[0] * v[t][0] + pen.targetWeight[1] * v[t][1] +
-                                            pen.targetWeight[2] * v[t][2];
-                const Vec2 relative = contactorVelocity - targetVelocity;
-                const Real slip = dot(relative, tangent);
-                const Real insideLength = edgeLength * pen.insideFraction;
-
-                const Real elasticNormal = cp.normalPenalty * edgeLength * pen.integral;
-                // Normal dashpot on the rate of the mean penetration depth delta = F_e / k_n (the depth a
-                // flat contact of stiffness k_n would need): an edge that slides at constant depth while
-                // its overlap grows or shrinks (entering or leaving a base element) is not damped.
-                const Real normalStiffness = 3 * cp.normalPenalty * insideLength / targetAltitude;
-                const Real depth = elasticNormal / normalStiffness;
-                Real normalForce = elasticNormal;
-                if (cp.normalDampingRatio > 0 && previousDepth > 0)
-                {
-                    const Real contactorMass =
-                        0.5 * (nodes_.mass[contactorNodes[e]] + nodes_.mass[contactorNodes[e1]]);
-                    Real targetMass = 0;
-                    for (int k = 0; k < 3; ++k)
-                        targetMass += pen.targetWeight[k] * nodes_.mass[targetNodes[k]];
-                    const bool contactorFree =
-                        !nodes_.prescribed[contactorNodes[e]] || !nodes_.prescribed[contactorNodes[e1]];
-                    const bool targetFree = !nodes_.prescribed[targetNodes[0]] ||
-                                            !nodes_.prescribed[targetNodes[1]] ||
-                                            !nodes_.prescribed[targetNodes[2]];
-                    const Real inverseMass =
-                        (contactorFree ? 1 / contactorMass : 0) + (targetFree ? 1 / targetMass : 0);
-                    if (inverseMass > 0)
-                    {
-                        const Real penetrationRate = (depth - previousDepth) / dt; // [m/s]
-                        const Real eta = 2 * cp.normalDampingRatio * std::sqrt(normalStiffness / inverseMass);
-                        normalForce = std::max(Real(0), elasticNormal + eta * penetrationRate);
-                        normalDampingWork_ += (normalForce - elasticNormal) * penetrationRate * dt;
-                    }
-                }
-                previousDepth = depth;
-                Real tangentialForce = 0;
-                if (cp.friction > 0)
-                {
-                    const Real stiffness = 3 * cp.tangentialPenalty * insideLength / targetAltitude;
-                    const Real eta = 2 * cp.tangentialDampingRatio *
-                                     std::sqrt(1.5 * cp.tangentialPenalty * rho) * insideLength;
-                    const Real cap = cp.friction * elasticNormal;
-                    const FrictionResult f = coulombFriction(spring, slip, dt, stiffness, eta, cap);
-                    spring = f.spring;
-                    tangentialForce = f.force;
-                    frictionWork_ -= tangentialForce * slip * dt;
-                    diagnostics_.tangentialForce += std::abs(tangentialForce);
-                    diagnostics_.cap += cap;
-                    diagnostics_.sliding += f.sliding ? 1 : 0;
-                }
-                diagnostics_.normalForce += elasticNormal;
-                ++diagnostics_.contacts;
-
-                const Vec2 force = tangentialForce * tangent - normalForce * normal; // on the contactor
-                const Real w1 = pen.firstMoment / pen.integral;
-                nodes_.force[contactorNodes[e]] += (1 - w1) * force;
-                nodes_.force[contactorNodes[e1]] += w1 * force;
-                for (int k = 0; k < 3; ++k)
-                    nodes_.force[targetNodes[k]] -= pen.targetWeight[k] * force;
-            }
-        }
-    }
-}
-
 void World::integrate()
 {
     const Real dt = settings_.timeStep;
-    for (const auto n : activeNodes_)
-    {
-        if (!nodes_.prescribed[n])
-            nodes_.velocity[n] += (dt * nodes_.inverseMass[n]) * nodes_.force[n];
-        nodes_.position[n] += dt * nodes_.velocity[n];
-    }
+    const std::size_t count = activeNodes_.size();
+    const int chunks = static_cast<int>((count + kNodeChunk - 1) / kNodeChunk);
+    exec::run(chunks,
+              [&](int c)
+              {
+                  const std::size_t end = std::min(count, (static_cast<std::size_t>(c) + 1) * kNodeChunk);
+                  for (std::size_t i = static_cast<std::size_t>(c) * kNodeChunk; i < end; ++i)
+                  {
+                      const auto n = activeNodes_[i];
+                      if (!nodes_.prescribed[n])
+                          nodes_.velocity[n] += (dt * nodes_.inverseMass[n]) * nodes_.force[n];
+                      nodes_.position[n] += dt * nodes_.velocity[n];
+                  }
+              });
     if (steps_ % 1024 == 0)
         for (const auto n : activeNodes_)
             if (!isFinite(nodes_.position[n]) || !isFinite(nodes_.velocity[n]))

@@ -73,6 +73,18 @@ struct Energies
     Real normalDampingWork = 0; ///< work dissipated by the normal contact dashpots since t = 0
 };
 
+/// Wall time spent in each phase of World::step() since the world was made [s] (fdem_bench's
+/// breakdown; steady clock, two readings per phase and step).
+struct StepTimes
+{
+    double elements = 0;    ///< CST forces of the active triangles, into their slots
+    double joints = 0;      ///< joint states and end forces, into their slots
+    double nodeForces = 0;  ///< weight + element + joint slots summed per node
+    double detection = 0;   ///< re-detection test and, when due, the broad phase
+    double contacts = 0;    ///< potential contact and friction per couple, then their scatter
+    double integration = 0; ///< central-difference update of the active nodes
+};
+
 /// Step diagnostics of the friction law (sums over edge contacts of the last step) [N/m].
 struct FrictionDiagnostics
 {
@@ -130,15 +142,30 @@ class World
     const std::vector<Couple>& couples() const { return contacts_.couples(); }
     const JointStore& joints() const { return joints_; }
     FractureState fractureState() const;
+    const StepTimes& stepTimes() const { return stepTimes_; }
 
   private:
     friend struct CheckpointAccess; // fdem/checkpoint.cpp saves and restores the private state
 
+    /// One touching edge contact's forces and sums, applied in couple order (world_contacts.cpp).
+    struct EdgeContactRecord
+    {
+        std::array<std::uint32_t, 5> node; ///< contactor e, e+1, target 0, 1, 2
+        std::array<Vec2, 5> force;         ///< added to the contactor's, subtracted from the target's [N/m]
+        Real dampingWork;                  ///< work of the normal dashpot in this step [J/m]
+        Real frictionWork;                 ///< F_t v_t dt [J/m]
+        Real tangential, cap, normal;      ///< |F_t|, mu F_n, F_n (elastic) [N/m]
+        std::uint8_t damped, friction, sliding;
+    };
+
     void refreshActiveLists();
+    void buildNodeSlots();
     void computeElementForces();
+    void sumNodeForces();
     bool needsDetection() const;
     void detectContacts();
     void computeContactForces();
+    void evaluateCouple(Couple& couple, std::vector<EdgeContactRecord>& records) const;
     SplitMesh splitForCracks(const BodyDefinition& body, const TriangleMesh& mesh) const;
     void insertJoints(const BodyDefinition& definition, const SplitMesh& split, std::uint32_t firstNode,
                       std::uint32_t firstTriangle);
@@ -174,6 +201,12 @@ class World
     std::vector<std::array<std::uint32_t, 3>> triangleJoints_; // joint ids per triangle (~0u: none)
     std::vector<std::array<Vec2, 3>> elementForce_; // scratch of the element loop (world_elements.cpp)
     std::vector<Real> elementJacobian_;             // scratch of the element loop
+    // Per node, its slots in the order of the serial scatter (world_elements.cpp): element slots
+    // 3 k + i of activeTriangles_[k], then joint slots 4 j + end (a0, a1, b0, b1).
+    std::vector<std::uint32_t> elementSlotStart_, elementSlots_, jointSlotStart_, jointSlots_;
+    bool nodeSlotsValid_ = false;
+    std::vector<std::vector<EdgeContactRecord>> contactRecords_; // per chunk of couples
+    StepTimes stepTimes_;
     std::size_t brokenJoints_ = 0;
     Real energyReleased_ = 0;
 };

@@ -7,6 +7,7 @@
 // in the same step (the joints come before the detection), so its two free edges meet through the
 // potential contact with friction from then on.
 #include "core/error.h"
+#include "exec/thread_pool.h"
 #include "fdem/elements/cst.h"
 #include "fdem/world.h"
 
@@ -126,7 +127,7 @@ void World::prescribeNode(std::uint32_t node, Vec2 velocity)
 
 void World::computeJointForces()
 {
-    const auto broken = addJointForces(joints_, nodes_.position, nodes_.force, laws_, time_);
+    const auto broken = evaluateJoints(joints_, nodes_.position, laws_, time_); // summed in sumNodeForces
     for (auto j : broken)
     {
         ++brokenJoints_;
@@ -154,9 +155,22 @@ void World::removeTiedPairs(std::vector<std::pair<std::uint32_t, std::uint32_t>>
 {
     if (joints_.nodes.empty())
         return;
-    pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                               [&](const auto& pair) { return jointedOrAdjacent(pair.first, pair.second); }),
-                pairs.end());
+    // Tested on the thread pool (each pair its own flag), compacted serially in order.
+    const std::size_t count = pairs.size();
+    std::vector<std::uint8_t> tied(count);
+    constexpr std::size_t kChunk = 8192;
+    exec::run(static_cast<int>((count + kChunk - 1) / kChunk),
+              [&](int c)
+              {
+                  const std::size_t end = std::min(count, (static_cast<std::size_t>(c) + 1) * kChunk);
+                  for (std::size_t i = static_cast<std::size_t>(c) * kChunk; i < end; ++i)
+                      tied[i] = jointedOrAdjacent(pairs[i].first, pairs[i].second) ? 1 : 0;
+              });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i)
+        if (!tied[i])
+            pairs[kept++] = pairs[i];
+    pairs.resize(kept);
 }
 
 FractureState World::fractureState() const

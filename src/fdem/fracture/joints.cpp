@@ -125,13 +125,12 @@ std::array<Vec2, 2> evaluateJoint(JointStore& joints, std::uint32_t j, const std
 
 } // namespace
 
-std::vector<std::uint32_t> addJointForces(JointStore& joints, const std::vector<Vec2>& position,
-                                          std::vector<Vec2>& force,
+std::vector<std::uint32_t> evaluateJoints(JointStore& joints, const std::vector<Vec2>& position,
                                           const std::vector<CohesiveConstants>& laws, Real time)
 {
-    // Phase 1 on the thread pool: each joint's state and end forces (no joint touches another's data).
-    // Phase 2 serial, in joint order: the scatter to the nodes, so the sums and hence the bits are the
-    // same on any thread count.
+    // On the thread pool: each joint's state and end forces (no joint touches another's data). The
+    // caller scatters the forces in a fixed order (World::sumNodeForces), so the bits are the same on
+    // any thread count.
     const std::size_t count = joints.size();
     joints.endForce.resize(count);
     joints.event.assign(count, 0);
@@ -150,23 +149,10 @@ std::vector<std::uint32_t> addJointForces(JointStore& joints, const std::vector<
                       joints.event[j] = joints.broken[j] ? 2 : 1; // 2: broke in this step
                   }
               });
-    std::vector<std::uint32_t> newlyBroken;
+    std::vector<std::uint32_t> newlyBroken; // a broken joint carries nothing (its last tractions are ~0)
     for (std::uint32_t j = 0; j < count; ++j)
-    {
         if (joints.event[j] == 2)
-        {
-            newlyBroken.push_back(j); // a broken joint carries nothing (its last tractions are ~0)
-            continue;
-        }
-        if (joints.event[j] != 1)
-            continue;
-        const auto& id = joints.nodes[j];
-        const auto& f = joints.endForce[j];
-        force[id[0]] += f[0];
-        force[id[2]] -= f[0];
-        force[id[1]] += f[1];
-        force[id[3]] -= f[1];
-    }
+            newlyBroken.push_back(j);
     return newlyBroken;
 }
 

@@ -55,16 +55,16 @@ struct JointStore
     std::vector<Real> brokenAt; ///< time of breaking [s]; NaN while intact
     std::vector<std::uint8_t> broken;
     std::vector<std::array<Vec2, 2>> endForce; ///< scratch of the step: forces on a0, a1 [N/m]
-    std::vector<std::uint8_t> event;           ///< scratch of the step: 1 evaluated, 2 broke
+    std::vector<std::uint8_t> event;           ///< scratch of the step: 1 evaluated, 2 broke (evaluateJoints)
 
     std::size_t size() const { return nodes.size(); }
 };
 
-/// Joint forces of one step, added to `force` [N/m], the joints evaluated on the thread pool and
-/// scattered in joint order (the same bits on any thread count). Returns the joints broken in this
-/// step (their brokenAt is set to `time`).
-std::vector<std::uint32_t> addJointForces(JointStore& joints, const std::vector<Vec2>& position,
-                                          std::vector<Vec2>& force,
+/// Joint states and end forces of one step, on the thread pool: each intact joint's endForce (on a0
+/// and a1; b0 and b1 get the opposite) [N/m] and event (1: evaluated and intact, 2: broke in this
+/// step, 0: broken before). Returns the joints broken in this step (their brokenAt is set to `time`
+/// [s]). The caller adds the forces of the event-1 joints to the nodes in joint order.
+std::vector<std::uint32_t> evaluateJoints(JointStore& joints, const std::vector<Vec2>& position,
                                           const std::vector<CohesiveConstants>& laws, Real time);
 
 /// The law's constants, after checking that the parameters are finite and phi in [0, 90) degrees
