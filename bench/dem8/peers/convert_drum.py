@@ -20,7 +20,7 @@ A malformed line stops the converter with the file, the line number and what was
 import os
 import sys
 
-from convert_impact import BOX_MARGIN, fail, numbers, read_triangles, write_stl
+from convert_impact import fail, numbers, read_triangles, write_data, write_stl
 
 SPLIT_RADIUS = 0.0015  # m: M1 below, M2 above (r = 1 mm and 2 mm)
 DENSITY = {1: 2500.0, 2: 2000.0}  # kg/m^3: M1, M2
@@ -48,16 +48,8 @@ def main():
     os.makedirs(out, exist_ok=True)
     beads = read_beads(beads_path)
     triangles = read_triangles(walls_path)
-    lo = [min(min(t[k][i] for k in range(3)) for t in triangles) - BOX_MARGIN for i in range(3)]
-    hi = [max(max(t[k][i] for k in range(3)) for t in triangles) + BOX_MARGIN for i in range(3)]
-    with open(os.path.join(out, "drum.data"), "w") as data:
-        data.write(f"DEM8 drum: {len(beads)} M1 and M2 spheres from {beads_path}\n\n")
-        data.write(f"{len(beads)} atoms\n3 atom types\n\n")
-        for i, name in enumerate("xyz"):
-            data.write(f"{lo[i]:.9g} {hi[i]:.9g} {name}lo {name}hi\n")
-        data.write("\nAtoms\n\n")
-        for atom_id, (x, y, z, r, kind) in enumerate(beads, start=1):
-            data.write(f"{atom_id} {kind} {2 * r:.9g} {DENSITY[kind]:.9g} {x:.12g} {y:.12g} {z:.12g}\n")
+    title = f"DEM8 drum: {len(beads)} M1 and M2 spheres from {beads_path}"
+    write_data(os.path.join(out, "drum.data"), title, beads, 3, DENSITY, triangles)
     write_stl(os.path.join(out, "walls.stl"), "dem8_drum", triangles)
     with open(os.path.join(out, "drum.txt"), "w") as info:
         m1 = sum(1 for b in beads if b[4] == 1)

@@ -84,6 +84,20 @@ def read_triangles(path):
     return triangles
 
 
+def write_data(path, title, spheres, types, density, triangles):
+    """LIGGGHTS read_data file, atom_style granular (id type diameter density x y z) of spheres
+    (x, y, z, r, type) [m], density[type] [kg/m^3]; the box encloses the triangles with BOX_MARGIN."""
+    lo = [min(min(t[k][i] for k in range(3)) for t in triangles) - BOX_MARGIN for i in range(3)]
+    hi = [max(max(t[k][i] for k in range(3)) for t in triangles) + BOX_MARGIN for i in range(3)]
+    with open(path, "w") as data:
+        data.write(f"{title}\n\n{len(spheres)} atoms\n{types} atom types\n\n")
+        for i, name in enumerate("xyz"):
+            data.write(f"{lo[i]:.9g} {hi[i]:.9g} {name}lo {name}hi\n")
+        data.write("\nAtoms\n\n")
+        for atom_id, (x, y, z, r, kind) in enumerate(spheres, start=1):
+            data.write(f"{atom_id} {kind} {2 * r:.9g} {density[kind]:.9g} {x:.12g} {y:.12g} {z:.12g}\n")
+
+
 def write_stl(path, name, triangles):
     """ASCII STL of read_triangles()' triangles (unit normals from the vertex order)."""
     with open(path, "w") as stl:
@@ -107,16 +121,8 @@ def main():
     spheres.append((*BALL_CENTRE, BALL_RADIUS, 2))
     triangles = read_triangles(walls_path)
 
-    lo = [min(min(t[k][i] for k in range(3)) for t in triangles) - BOX_MARGIN for i in range(3)]
-    hi = [max(max(t[k][i] for k in range(3)) for t in triangles) + BOX_MARGIN for i in range(3)]
-    with open(os.path.join(out, "impact.data"), "w") as data:
-        data.write(f"DEM8 impact: {len(spheres) - 1} M1 spheres from {bed_path} and the steel ball\n\n")
-        data.write(f"{len(spheres)} atoms\n2 atom types\n\n")
-        for i, name in enumerate("xyz"):
-            data.write(f"{lo[i]:.9g} {hi[i]:.9g} {name}lo {name}hi\n")
-        data.write("\nAtoms\n\n")
-        for atom_id, (x, y, z, r, kind) in enumerate(spheres, start=1):
-            data.write(f"{atom_id} {kind} {2 * r:.9g} {DENSITY[kind]:.9g} {x:.12g} {y:.12g} {z:.12g}\n")
+    title = f"DEM8 impact: {len(spheres) - 1} M1 spheres from {bed_path} and the steel ball"
+    write_data(os.path.join(out, "impact.data"), title, spheres, 2, DENSITY, triangles)
     write_stl(os.path.join(out, "walls.stl"), "dem8_impact_box", triangles)
     with open(os.path.join(out, "spheres.txt"), "w") as text:
         for x, y, z, r, kind in spheres:
