@@ -2,6 +2,7 @@
 #include "core/error.h"
 #include "dem/time_step.h"
 #include "io/dem_scene.h"
+#include "scene_text.h"
 
 #include <gtest/gtest.h>
 
@@ -15,21 +16,12 @@ namespace
 {
 io::DemScene load(const std::string& text)
 {
-    return io::readDemScene(toml::parse(std::string_view{text}, std::string_view{"scene.toml"}),
-                            "scene.toml");
+    return test::loadScene(text);
 }
 
 std::string errorOf(const std::string& text)
 {
-    try
-    {
-        load(text);
-    }
-    catch (const InputError& e)
-    {
-        return e.what();
-    }
-    return "";
+    return test::sceneError(text);
 }
 
 const std::string kHeader = R"(

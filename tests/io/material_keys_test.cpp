@@ -6,6 +6,7 @@
 #include "dem/models/normal.h"
 #include "io/dem_scene.h"
 #include "io/material_keys.h"
+#include "scene_text.h"
 
 #include <gtest/gtest.h>
 
@@ -99,21 +100,12 @@ template <std::size_t kCount> bool listed(const std::string_view (&keys)[kCount]
 
 io::DemScene load(const std::string& text)
 {
-    return io::readDemScene(toml::parse(std::string_view{text}, std::string_view{"scene.toml"}),
-                            "scene.toml");
+    return test::loadScene(text);
 }
 
 std::string errorOf(const std::string& text)
 {
-    try
-    {
-        load(text);
-    }
-    catch (const InputError& e)
-    {
-        return e.what();
-    }
-    return "";
+    return test::sceneError(text);
 }
 
 const std::string kSimulation = "[simulation]\ndt = 1e-6\nduration = 1e-3\n";
@@ -161,6 +153,17 @@ TEST(MaterialKeys, DocPairTableHasEveryOverridableKey)
         const dem::ModelParam* p = dem::findModelParam(key);
         EXPECT_TRUE((p && p->pairOverride) || listed(io::kPairOwnKeys, key))
             << "'" << key << "' is in docs/scene-format.md's [[pair]] table but a pair cannot take it";
+    }
+}
+
+TEST(MaterialKeys, ExclusiveWithNamesADeclaredKey)
+{
+    for (const dem::ModelParam& p : dem::kModelParams)
+    {
+        if (!p.exclusiveWith.empty())
+        {
+            EXPECT_NE(dem::findModelParam(p.exclusiveWith), nullptr) << p.key << ": " << p.exclusiveWith;
+        }
     }
 }
 
